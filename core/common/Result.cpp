@@ -8,9 +8,14 @@ std::string Error::toString() const {
         out += file;
         if (line > 0)
             out += ":" + std::to_string(line);
+        if (line > 0 && column > 0)
+            out += ":" + std::to_string(column);
         out += ": ";
     } else if (line > 0) {
-        out += "line " + std::to_string(line) + ": ";
+        out += "line " + std::to_string(line);
+        if (column > 0)
+            out += ", column " + std::to_string(column);
+        out += ": ";
     }
     if (!object.empty())
         out += "'" + object + "': ";

@@ -13,8 +13,9 @@ struct Error {
     int line = 0;        // 1-based line, 0 when not known
     std::string object;  // body, object or JSON key the problem belongs to, if any
     std::string message; // what is wrong, in plain words
+    int column = 0;      // 1-based column within the line, 0 when not known (text formats such as JSON)
 
-    // "file:line: object 'name': message", leaving out the parts that are empty.
+    // "file:line:column: object 'name': message", leaving out the parts that are empty.
     std::string toString() const;
 };
 

@@ -12,9 +12,9 @@ namespace rl {
 
 struct MaterialDef {
     std::string name = "Default";
-    Real density = 1000.0;   // kg/m^3
-    Real friction = 0.5;     // Coulomb coefficient
-    Real restitution = 0.0;  // 0 = no bounce, 1 = elastic
+    Real density = 1000.0;  // kg/m^3
+    Real friction = 0.5;    // Coulomb coefficient
+    Real restitution = 0.0; // 0 = no bounce, 1 = elastic
 
     bool operator==(const MaterialDef&) const = default;
 };

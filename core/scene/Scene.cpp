@@ -19,8 +19,8 @@ bool equalsIgnoreCase(std::string_view a, std::string_view b) {
 const std::vector<MaterialDef>& materialPresets() {
     // Values from the original project (DESIGN.md §3).
     static const std::vector<MaterialDef> kPresets = {
-        {"Default", 1000.0, 0.5, 0.0}, {"Steel", 7850.0, 0.5, 0.6},    {"Wood", 700.0, 0.45, 0.35},
-        {"Rubber", 1100.0, 1.0, 0.8},  {"Ice", 917.0, 0.03, 0.05},     {"Concrete", 2400.0, 0.7, 0.1},
+        {"Default", 1000.0, 0.5, 0.0},  {"Steel", 7850.0, 0.5, 0.6}, {"Wood", 700.0, 0.45, 0.35},
+        {"Rubber", 1100.0, 1.0, 0.8},   {"Ice", 917.0, 0.03, 0.05},  {"Concrete", 2400.0, 0.7, 0.1},
         {"Plastic", 950.0, 0.35, 0.45},
     };
     return kPresets;
@@ -52,11 +52,13 @@ Real combine(CombineRule rule, Real a, Real b) {
 namespace {
 constexpr std::string_view kCombineNames[] = {"geometric-mean", "average", "min", "max", "multiply"};
 constexpr std::string_view kIntegratorNames[] = {"explicit-euler", "symplectic-euler", "verlet", "rk4"};
-constexpr std::string_view kEffectNames[] = {"gravity",  "rotation", "friction", "restitution",
-                                             "damping",  "sleeping", "ccd"};
+constexpr std::string_view kEffectNames[] = {"gravity", "rotation", "friction", "restitution",
+                                             "damping", "sleeping", "ccd"};
 } // namespace
 
-std::string_view combineRuleName(CombineRule rule) { return kCombineNames[static_cast<int>(rule)]; }
+std::string_view combineRuleName(CombineRule rule) {
+    return kCombineNames[static_cast<int>(rule)];
+}
 
 std::optional<CombineRule> parseCombineRule(std::string_view name) {
     for (int i = 0; i < 5; ++i)
@@ -65,7 +67,9 @@ std::optional<CombineRule> parseCombineRule(std::string_view name) {
     return std::nullopt;
 }
 
-std::string_view integratorName(Integrator integrator) { return kIntegratorNames[static_cast<int>(integrator)]; }
+std::string_view integratorName(Integrator integrator) {
+    return kIntegratorNames[static_cast<int>(integrator)];
+}
 
 std::optional<Integrator> parseIntegrator(std::string_view name) {
     for (int i = 0; i < 4; ++i)
@@ -74,7 +78,9 @@ std::optional<Integrator> parseIntegrator(std::string_view name) {
     return std::nullopt;
 }
 
-std::string_view effectName(Effect effect) { return kEffectNames[static_cast<int>(effect)]; }
+std::string_view effectName(Effect effect) {
+    return kEffectNames[static_cast<int>(effect)];
+}
 
 std::string EffectsSetting::toString() const {
     bool allAuto = true, allOff = true;
@@ -127,7 +133,7 @@ std::optional<EffectsSetting> EffectsSetting::parse(std::string_view text, std::
             equalsIgnoreCase(t, "linear-only")) {
             if (i != 0)
                 return fail("'" + std::string(t) + "' must come first in an effects list");
-            EffectMode m = equalsIgnoreCase(t, "none") ? EffectMode::Off
+            EffectMode m = equalsIgnoreCase(t, "none")  ? EffectMode::Off
                            : equalsIgnoreCase(t, "all") ? EffectMode::On
                                                         : EffectMode::Auto;
             result.modes.fill(m);

@@ -44,8 +44,8 @@ struct WorldSettings {
     int iterations = 1;            // velocity iterations per substep
     Integrator integrator = Integrator::SymplecticEuler;
     EffectsSetting effects;
-    Real linearDamping = 0.0;      // 1/s
-    Real angularDamping = 0.0;     // 1/s
+    Real linearDamping = 0.0;  // 1/s
+    Real angularDamping = 0.0; // 1/s
     CombineRule frictionCombine = CombineRule::GeometricMean;
     CombineRule restitutionCombine = CombineRule::Max;
 

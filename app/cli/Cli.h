@@ -1,0 +1,29 @@
+// Shared pieces of rigidlab-cli: exit codes, the subcommand signature and output helpers.
+// Each subcommand lives in its own Cmd*.cpp file and is listed once in main.cpp.
+#pragma once
+
+#include <QString>
+#include <QStringList>
+
+#include <string>
+
+namespace rl::cli {
+
+enum ExitCode { kExitOk = 0, kExitFailure = 1, kExitUsage = 2 };
+
+// A subcommand gets its own arguments (argv[0] is "rigidlab-cli <name>") and returns an ExitCode.
+using Command = int (*)(const QStringList& arguments);
+
+int runInfo(const QStringList& arguments);
+int runExport(const QStringList& arguments);
+int runBake(const QStringList& arguments);
+int runAccuracy(const QStringList& arguments);
+int runBench(const QStringList& arguments);
+int runDiff(const QStringList& arguments);
+
+// Messages for people go to stderr; data goes to stdout or files.
+void printError(const QString& message);
+void printError(const std::string& message);
+void printOut(const QString& text);
+
+} // namespace rl::cli

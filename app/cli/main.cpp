@@ -1,0 +1,77 @@
+// rigidlab-cli: the headless front end. Dispatches to one subcommand; exit codes: 0 ok, 1 bad input or failed run,
+// 2 bad usage (DESIGN.md §6).
+#include "Cli.h"
+
+#include <QCoreApplication>
+
+#include <cstdio>
+
+namespace rl::cli {
+
+void printError(const QString& message) {
+    std::fputs(qPrintable(message), stderr);
+    std::fputc('\n', stderr);
+}
+
+void printError(const std::string& message) {
+    printError(QString::fromStdString(message));
+}
+
+void printOut(const QString& text) {
+    const QByteArray bytes = text.toUtf8();
+    std::fwrite(bytes.constData(), 1, static_cast<size_t>(bytes.size()), stdout);
+}
+
+} // namespace rl::cli
+
+namespace {
+
+struct Entry {
+    const char* name;
+    rl::cli::Command run;
+    const char* summary;
+};
+
+const Entry kCommands[] = {
+    {"info", rl::cli::runInfo, "bodies, anchors, materials, volume, mass, centre of mass, inertia, warnings"},
+    {"export", rl::cli::runExport, "convert a .bake to CSV or to a .bake in the current format"},
+};
+
+void printUsage(FILE* out) {
+    std::fprintf(out, "Usage: rigidlab-cli <command> [options]\n\nCommands:\n");
+    for (const Entry& e : kCommands)
+        std::fprintf(out, "  %-10s %s\n", e.name, e.summary);
+    std::fprintf(out, "\nRun 'rigidlab-cli <command> --help' for the options of one command.\n");
+}
+
+} // namespace
+
+int main(int argc, char* argv[]) {
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName("rigidlab-cli");
+    QCoreApplication::setApplicationVersion(RIGIDLAB_VERSION);
+    const QStringList args = QCoreApplication::arguments();
+    if (args.size() < 2) {
+        printUsage(stderr);
+        return rl::cli::kExitUsage;
+    }
+    const QString command = args.at(1);
+    if (command == "--help" || command == "-h" || command == "help") {
+        printUsage(stdout);
+        return rl::cli::kExitOk;
+    }
+    if (command == "--version" || command == "-v") {
+        std::printf("rigidlab-cli %s\n", RIGIDLAB_VERSION);
+        return rl::cli::kExitOk;
+    }
+    for (const Entry& e : kCommands) {
+        if (command == QLatin1String(e.name)) {
+            QStringList sub = args.mid(2);
+            sub.prepend(args.at(0) + " " + command);
+            return e.run(sub);
+        }
+    }
+    std::fprintf(stderr, "rigidlab-cli: unknown command '%s'\n\n", qPrintable(command));
+    printUsage(stderr);
+    return rl::cli::kExitUsage;
+}

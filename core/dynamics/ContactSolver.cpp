@@ -1,0 +1,187 @@
+#include "dynamics/ContactSolver.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rl {
+
+void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2) {
+    // Pick the axis least aligned with n so the cross product is well conditioned.
+    if (std::abs(n.x) >= 0.57735)
+        t1 = glm::normalize(Vec3(n.y, -n.x, 0.0));
+    else
+        t1 = glm::normalize(Vec3(0.0, n.z, -n.y));
+    t2 = glm::cross(n, t1);
+}
+
+namespace {
+
+Real effectiveMass(const SolverBody& a, const SolverBody& b, const Vec3& rA, const Vec3& rB, const Vec3& dir) {
+    const Vec3 rnA = glm::cross(rA, dir);
+    const Vec3 rnB = glm::cross(rB, dir);
+    const Real k = a.invMass + b.invMass + glm::dot(rnA, a.invInertia * rnA) + glm::dot(rnB, b.invInertia * rnB);
+    return k > 0.0 ? 1.0 / k : 0.0;
+}
+
+void applyImpulse(SolverBody& a, SolverBody& b, const Vec3& rA, const Vec3& rB, const Vec3& impulse) {
+    a.v -= a.invMass * impulse;
+    a.w -= a.invInertia * glm::cross(rA, impulse);
+    b.v += b.invMass * impulse;
+    b.w += b.invInertia * glm::cross(rB, impulse);
+}
+
+Vec3 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec3& rA, const Vec3& rB) {
+    return (b.v + glm::cross(b.w, rB)) - (a.v + glm::cross(a.w, rA));
+}
+
+} // namespace
+
+void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const uint32_t> solverIndexA,
+                            std::span<const uint32_t> solverIndexB, std::span<const Real> friction,
+                            std::span<const Real> restitution, std::span<const SolverBody> bodies,
+                            std::span<const Vec3> centers, Real h, const ContactSolverSettings& settings) {
+    m_settings = settings;
+    m_inverseH = h > 0.0 ? 1.0 / h : 0.0;
+    // Soft constraint as a damped spring (Catto, "Solver2D" 2024): omega = 2 pi f, and with zeta the damping ratio
+    // the implicit-Euler spring gives bias rate omega / (2 zeta + h omega) and a mass scale below 1.
+    const Real omega = 2.0 * kPi * settings.contactHertz;
+    const Real a1 = 2.0 * settings.dampingRatio + h * omega;
+    const Real a2 = h * omega * a1;
+    const Real a3 = 1.0 / (1.0 + a2);
+    m_biasRate = omega / a1;
+    m_massScale = a2 * a3;
+    m_impulseScale = a3;
+
+    m_constraints.resize(manifolds.size());
+    for (size_t i = 0; i < manifolds.size(); ++i) {
+        const Manifold& m = manifolds[i];
+        ContactConstraint& c = m_constraints[i];
+        c.bodyA = solverIndexA[i];
+        c.bodyB = solverIndexB[i];
+        c.normal = m.normal;
+        tangentBasis(m.normal, c.tangent[0], c.tangent[1]);
+        c.friction = friction[i];
+        c.restitution = restitution[i];
+        c.pointCount = m.pointCount;
+        const SolverBody& a = bodies[c.bodyA];
+        const SolverBody& b = bodies[c.bodyB];
+        for (int k = 0; k < m.pointCount; ++k) {
+            const ContactPoint& mp = m.points[k];
+            ContactConstraint::Point& p = c.points[k];
+            // Both anchors sit at the world midpoint of the witness points, in world axes at the step start.
+            p.rA = mp.position - centers[c.bodyA];
+            p.rB = mp.position - centers[c.bodyB];
+            p.baseSeparation = mp.separation - glm::dot(p.rB - p.rA, c.normal);
+            p.normalMass = effectiveMass(a, b, p.rA, p.rB, c.normal);
+            p.tangentMass[0] = effectiveMass(a, b, p.rA, p.rB, c.tangent[0]);
+            p.tangentMass[1] = effectiveMass(a, b, p.rA, p.rB, c.tangent[1]);
+            p.normalImpulse = settings.warmStarting ? mp.normalImpulse : 0.0;
+            p.tangentImpulse[0] = settings.warmStarting ? mp.tangentImpulse[0] : 0.0;
+            p.tangentImpulse[1] = settings.warmStarting ? mp.tangentImpulse[1] : 0.0;
+            p.maxNormalImpulse = 0.0;
+            p.relativeVelocity = glm::dot(c.normal, relativeVelocity(a, b, p.rA, p.rB));
+        }
+    }
+}
+
+void ContactSolver::warmStart(std::span<SolverBody> bodies) {
+    if (!m_settings.warmStarting)
+        return;
+    for (ContactConstraint& c : m_constraints) {
+        SolverBody& a = bodies[c.bodyA];
+        SolverBody& b = bodies[c.bodyB];
+        for (int k = 0; k < c.pointCount; ++k) {
+            const ContactConstraint::Point& p = c.points[k];
+            const Vec3 impulse =
+                p.normalImpulse * c.normal + p.tangentImpulse[0] * c.tangent[0] + p.tangentImpulse[1] * c.tangent[1];
+            applyImpulse(a, b, p.rA, p.rB, impulse);
+        }
+    }
+}
+
+void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
+    for (ContactConstraint& c : m_constraints) {
+        SolverBody& a = bodies[c.bodyA];
+        SolverBody& b = bodies[c.bodyB];
+        for (int k = 0; k < c.pointCount; ++k) {
+            ContactConstraint::Point& p = c.points[k];
+            // Current separation from the motion since the step began; anchors follow each body's rotation.
+            const Vec3 prA = a.dq * p.rA;
+            const Vec3 prB = b.dq * p.rB;
+            const Vec3 d = (b.dp - a.dp) + (prB - prA);
+            const Real s = glm::dot(c.normal, d) + p.baseSeparation;
+
+            Real velocityBias = 0.0, massScale = 1.0, impulseScale = 0.0;
+            if (s > 0.0) {
+                // Speculative: allow the gap to close exactly within this substep.
+                velocityBias = s * m_inverseH;
+            } else if (useBias) {
+                velocityBias = std::max(m_biasRate * s, -m_settings.maxPushoutSpeed);
+                massScale = m_massScale;
+                impulseScale = m_impulseScale;
+            }
+            const Real vn = glm::dot(c.normal, relativeVelocity(a, b, p.rA, p.rB));
+            Real impulse = -p.normalMass * massScale * (vn + velocityBias) - impulseScale * p.normalImpulse;
+            const Real newImpulse = std::max(p.normalImpulse + impulse, 0.0);
+            impulse = newImpulse - p.normalImpulse;
+            p.normalImpulse = newImpulse;
+            p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
+            applyImpulse(a, b, p.rA, p.rB, impulse * c.normal);
+        }
+        m_counters.normalRows += static_cast<uint64_t>(c.pointCount);
+
+        if (!m_settings.friction || c.friction <= 0.0)
+            continue;
+        for (int k = 0; k < c.pointCount; ++k) {
+            ContactConstraint::Point& p = c.points[k];
+            const Real maxFriction = c.friction * p.normalImpulse;
+            for (int t = 0; t < 2; ++t) {
+                const Real vt = glm::dot(c.tangent[t], relativeVelocity(a, b, p.rA, p.rB));
+                Real impulse = -p.tangentMass[t] * vt;
+                const Real newImpulse = std::clamp(p.tangentImpulse[t] + impulse, -maxFriction, maxFriction);
+                impulse = newImpulse - p.tangentImpulse[t];
+                p.tangentImpulse[t] = newImpulse;
+                applyImpulse(a, b, p.rA, p.rB, impulse * c.tangent[t]);
+            }
+        }
+        m_counters.frictionRows += 2u * static_cast<uint64_t>(c.pointCount);
+    }
+}
+
+void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
+    if (!m_settings.restitution)
+        return;
+    for (ContactConstraint& c : m_constraints) {
+        if (c.restitution == 0.0)
+            continue;
+        SolverBody& a = bodies[c.bodyA];
+        SolverBody& b = bodies[c.bodyB];
+        for (int k = 0; k < c.pointCount; ++k) {
+            ContactConstraint::Point& p = c.points[k];
+            // Only points that approached fast and actually pushed back bounce.
+            if (p.relativeVelocity > -m_settings.restitutionThreshold || p.maxNormalImpulse == 0.0)
+                continue;
+            const Real vn = glm::dot(c.normal, relativeVelocity(a, b, p.rA, p.rB));
+            Real impulse = -p.normalMass * (vn + c.restitution * p.relativeVelocity);
+            const Real newImpulse = std::max(p.normalImpulse + impulse, 0.0);
+            impulse = newImpulse - p.normalImpulse;
+            p.normalImpulse = newImpulse;
+            p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
+            applyImpulse(a, b, p.rA, p.rB, impulse * c.normal);
+            ++m_counters.restitutionRows;
+        }
+    }
+}
+
+void ContactSolver::storeImpulses(std::span<Manifold> manifolds) const {
+    for (size_t i = 0; i < manifolds.size() && i < m_constraints.size(); ++i) {
+        const ContactConstraint& c = m_constraints[i];
+        for (int k = 0; k < c.pointCount; ++k) {
+            manifolds[i].points[k].normalImpulse = c.points[k].normalImpulse;
+            manifolds[i].points[k].tangentImpulse[0] = c.points[k].tangentImpulse[0];
+            manifolds[i].points[k].tangentImpulse[1] = c.points[k].tangentImpulse[1];
+        }
+    }
+}
+
+} // namespace rl

@@ -1,0 +1,100 @@
+// Soft-step contact solver: sequential impulses with warm starting, soft (spring-damper) contacts, Coulomb friction
+// on two tangents and a restitution pass after the substeps. The world calls it once per substep (DESIGN.md §2).
+#pragma once
+
+#include "collision/Manifold.h"
+#include "math/Types.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace rl {
+
+// Hot per-body state the solver reads and writes during a step. Positions are not needed: the solver measures the
+// current separation from the position change since the step began (dp, dq), as Box2D v3's soft step does, so the
+// collision manifolds are computed once per step and stay usable across substeps.
+struct SolverBody {
+    Vec3 v{0.0};                 // linear velocity of the centre of mass
+    Vec3 w{0.0};                 // angular velocity, world axes
+    Vec3 dp{0.0};                // position change since the step began
+    Quat dq{1.0, 0.0, 0.0, 0.0}; // rotation change since the step began
+    Real invMass = 0.0;          // 0 for anchors and kinematic proxies
+    Mat3 invInertia{0.0};        // world axes, taken at the start of the step
+};
+
+struct ContactSolverSettings {
+    // Contact stiffness as a frequency: stiff enough to hold stacks, soft enough to stay stable at the substep rate.
+    // Box2D v3 uses 30 Hz with a damping ratio of 10 (heavily over-damped, so contacts do not ring).
+    Real contactHertz = 30.0;
+    Real dampingRatio = 10.0;
+    // Overlap is pushed apart no faster than this (m/s). It bounds how violently deeply overlapping bodies separate.
+    Real maxPushoutSpeed = 3.0;
+    // Restitution applies only above this approach speed (m/s); slower impacts come to rest instead of jittering.
+    Real restitutionThreshold = 1.0;
+    bool friction = true;
+    bool restitution = true;
+    bool warmStarting = true;
+};
+
+struct ContactSolverCounters {
+    uint64_t normalRows = 0;   // normal constraint rows solved (points x iterations)
+    uint64_t frictionRows = 0; // tangent rows solved
+    uint64_t restitutionRows = 0;
+};
+
+// One manifold's solver data. bodyA/bodyB index the SolverBody array; a static body is an entry with invMass 0.
+struct ContactConstraint {
+    struct Point {
+        Vec3 rA{0.0}, rB{0.0};     // anchors relative to each centre of mass, world axes, at the step start
+        Real baseSeparation = 0.0; // separation minus the anchor term, so dp/dq give the current separation
+        Real normalMass = 0.0;
+        Real tangentMass[2] = {0.0, 0.0};
+        Real normalImpulse = 0.0;
+        Real tangentImpulse[2] = {0.0, 0.0};
+        Real maxNormalImpulse = 0.0;
+        Real relativeVelocity = 0.0; // normal approach speed before the solve, for restitution
+    };
+    uint32_t bodyA = 0, bodyB = 0;
+    Vec3 normal{0.0, 1.0, 0.0};
+    Vec3 tangent[2];
+    Real friction = 0.0;
+    Real restitution = 0.0;
+    int pointCount = 0;
+    Point points[4];
+};
+
+class ContactSolver {
+public:
+    // Builds constraints from manifolds. solverIndexA/B map each manifold to SolverBody entries; friction and
+    // restitution are the combined values per manifold; centers are the bodies' centres of mass at the step start
+    // (indexed like bodies). h is the substep length.
+    void prepare(std::span<const Manifold> manifolds, std::span<const uint32_t> solverIndexA,
+                 std::span<const uint32_t> solverIndexB, std::span<const Real> friction,
+                 std::span<const Real> restitution, std::span<const SolverBody> bodies, std::span<const Vec3> centers,
+                 Real h, const ContactSolverSettings& settings);
+
+    void warmStart(std::span<SolverBody> bodies);
+    // useBias = true: the soft solve that pushes overlap apart; false: the relax pass that removes the bias velocity.
+    void solve(std::span<SolverBody> bodies, bool useBias);
+    void applyRestitution(std::span<SolverBody> bodies);
+    // Writes the accumulated impulses back to the manifolds for warm starting in the next step.
+    void storeImpulses(std::span<Manifold> manifolds) const;
+
+    const std::vector<ContactConstraint>& constraints() const { return m_constraints; }
+    const ContactSolverCounters& counters() const { return m_counters; }
+    void resetCounters() { m_counters = {}; }
+
+private:
+    std::vector<ContactConstraint> m_constraints;
+    ContactSolverSettings m_settings;
+    Real m_inverseH = 0.0;
+    // Soft constraint coefficients for the substep (see prepare()).
+    Real m_biasRate = 0.0, m_massScale = 1.0, m_impulseScale = 0.0;
+    ContactSolverCounters m_counters;
+};
+
+// Two unit tangents orthogonal to n, chosen deterministically.
+void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2);
+
+} // namespace rl

@@ -1,0 +1,130 @@
+// Tests of rigidlab-cli as a user runs it: exit codes, messages that name the file, and the info/export output.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+Run runCli(const QStringList& args) {
+    QProcess p;
+    p.start(QStringLiteral(RL_CLI_PATH), args);
+    Run r;
+    if (!p.waitForFinished(120000)) {
+        p.kill();
+        return r;
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+    r.out = p.readAllStandardOutput();
+    r.err = p.readAllStandardError();
+    return r;
+}
+
+QString scenePath(const char* name) {
+    return QStringLiteral(RL_SOURCE_DIR "/resources/scenes/") + name;
+}
+
+} // namespace
+
+class TestCli : public QObject {
+    Q_OBJECT
+private slots:
+    void usage_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<int>("exitCode");
+        QTest::newRow("no arguments") << QStringList{} << 2;
+        QTest::newRow("help") << QStringList{"--help"} << 0;
+        QTest::newRow("unknown command") << QStringList{"frobnicate"} << 2;
+        QTest::newRow("info help") << QStringList{"info", "--help"} << 0;
+        QTest::newRow("info without scene") << QStringList{"info"} << 2;
+        QTest::newRow("info unknown option") << QStringList{"info", "--bogus", "x.obj"} << 2;
+        QTest::newRow("export help") << QStringList{"export", "--help"} << 0;
+        QTest::newRow("export without input") << QStringList{"export"} << 2;
+    }
+    void usage() {
+        QFETCH(QStringList, args);
+        QFETCH(int, exitCode);
+        const Run r = runCli(args);
+        QCOMPARE(r.exitCode, exitCode);
+        if (exitCode == 2)
+            QVERIFY(!r.err.isEmpty());
+    }
+
+    void badInputNamesTheFile_data() {
+        QTest::addColumn<QByteArray>("content");
+        QTest::addColumn<QString>("fileName");
+        QTest::newRow("empty") << QByteArray() << "empty.obj";
+        QTest::newRow("binary") << QByteArray("\x00\x01\x02\xff\xfe garbage \x00", 16) << "binary.obj";
+        QTest::newRow("face index out of range")
+            << QByteArray("o Cube\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n") << "range.obj";
+        QTest::newRow("nan vertex") << QByteArray("o Cube\nv 0 0 nan\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n")
+                                    << "nan.obj";
+        QTest::newRow("flat dynamic body")
+            << QByteArray("o Sheet\nv 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nf 1 2 3 4\n") << "flat.obj";
+    }
+    void badInputNamesTheFile() {
+        QFETCH(QByteArray, content);
+        QFETCH(QString, fileName);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(fileName);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(content);
+        f.close();
+        const Run r = runCli({"info", path});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(fileName.toUtf8()), r.err.constData());
+    }
+
+    void missingFile() {
+        const Run r = runCli({"info", "/nonexistent/scene.obj"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains("/nonexistent/scene.obj"));
+    }
+
+    void infoJsonOnStack() {
+        const Run r = runCli({"info", scenePath("stack.obj"), "--json"});
+        QCOMPARE(r.exitCode, 0);
+        QJsonParseError error;
+        const QJsonDocument doc = QJsonDocument::fromJson(r.out, &error);
+        QCOMPARE(error.error, QJsonParseError::NoError);
+        const QJsonArray bodies = doc.object().value("bodies").toArray();
+        QCOMPARE(bodies.size(), 11);
+        int anchors = 0;
+        for (const QJsonValue& v : bodies) {
+            const QJsonObject b = v.toObject();
+            if (b.value("anchor").toBool()) {
+                ++anchors;
+                QCOMPARE(b.value("volume").toDouble(), 0.0);
+                continue;
+            }
+            // Unit Wood cubes: 1 m^3, 700 kg, inertia m/6 on the diagonal.
+            QVERIFY(qAbs(b.value("volume").toDouble() - 1.0) < 1e-9);
+            QVERIFY(qAbs(b.value("mass").toDouble() - 700.0) < 1e-6);
+            QCOMPARE(b.value("material").toString(), QString("Wood"));
+            const QJsonArray inertia = b.value("inertia").toArray();
+            QCOMPARE(inertia.size(), 3);
+            QVERIFY(qAbs(inertia[0].toArray()[0].toDouble() - 700.0 / 6.0) < 1e-6);
+            QVERIFY(qAbs(inertia[0].toArray()[1].toDouble()) < 1e-6);
+            QCOMPARE(b.value("hull_vertices").toInt(), 8);
+        }
+        QCOMPARE(anchors, 1);
+    }
+
+    void infoTextMentionsWarnings() {
+        const Run r = runCli({"info", scenePath("mixed.obj")});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains("concave"), r.out.constData());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"

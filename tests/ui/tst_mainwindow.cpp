@@ -1,0 +1,90 @@
+// The editor's main window: opening scenes from disk fills the outliner; bad files give an error, not a crash.
+#include "MainWindow.h"
+#include "document/SceneDocument.h"
+#include "outliner/OutlinerModel.h"
+
+#include <QAbstractItemModel>
+#include <QApplication>
+#include <QDir>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QSurfaceFormat>
+#include <QTest>
+#include <QTimer>
+#include <QTreeView>
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+public:
+    static void initMain() {
+        QSurfaceFormat format;
+        format.setVersion(3, 3);
+        format.setProfile(QSurfaceFormat::CoreProfile);
+        format.setDepthBufferSize(24);
+        QSurfaceFormat::setDefaultFormat(format);
+        const QString runtime = QDir::tempPath() + "/rigidlab-test-runtime";
+        QDir().mkpath(runtime);
+        QFile::setPermissions(runtime, QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+        qputenv("XDG_RUNTIME_DIR", runtime.toUtf8());
+        QCoreApplication::setOrganizationName("RigidLabTests");
+    }
+
+private slots:
+    void opensSceneIntoOutliner_data() {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("bodies");
+        QTest::addColumn<int>("anchors");
+        QTest::newRow("stack") << "stack.obj" << 11 << 1;
+        QTest::newRow("pyramid") << "pyramid.obj" << 56 << 1;
+    }
+    void opensSceneIntoOutliner() {
+        QFETCH(QString, file);
+        QFETCH(int, bodies);
+        QFETCH(int, anchors);
+        rl::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/") + file));
+        QAbstractItemModel* model = window.outlinerView()->model();
+        QCOMPARE(model->rowCount(), bodies);
+        int anchorRows = 0;
+        for (int row = 0; row < model->rowCount(); ++row)
+            anchorRows += model->index(row, 0).data(rl::OutlinerModel::AnchorRole).toBool() ? 1 : 0;
+        QCOMPARE(anchorRows, anchors);
+        // Names in file order, as the document holds them.
+        QCOMPARE(model->index(0, 0).data().toString(), QString::fromStdString(window.document()->body(0).name));
+        QVERIFY(window.windowTitle().contains(file));
+    }
+
+    void filterNarrowsRows() {
+        rl::MainWindow window;
+        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/stack.obj")));
+        auto* filter = window.findChild<QLineEdit*>("OutlinerFilter");
+        QVERIFY(filter);
+        QTest::keyClicks(filter, "anchor");
+        QCOMPARE(window.outlinerView()->model()->rowCount(), 1);
+        filter->clear();
+        QCOMPARE(window.outlinerView()->model()->rowCount(), 11);
+    }
+
+    void badFileShowsErrorAndKeepsScene() {
+        rl::MainWindow window;
+        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/stack.obj")));
+        QString shownText;
+        // The error box is modal; read it and close it from the event loop.
+        QTimer::singleShot(200, [&shownText] {
+            for (QWidget* w : QApplication::topLevelWidgets()) {
+                if (auto* box = qobject_cast<QMessageBox*>(w)) {
+                    shownText = box->text();
+                    box->accept();
+                }
+            }
+        });
+        QVERIFY(!window.openFile("/nonexistent/missing.obj"));
+        QVERIFY(shownText.contains("missing.obj"));
+        QCOMPARE(window.document()->bodyCount(), 11); // the open scene is not lost
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"

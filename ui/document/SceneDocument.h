@@ -1,0 +1,54 @@
+// The document the editor edits: an rl::Scene, its file and an undo stack, with signals that keep every view in sync.
+// Views read through this class; edits go through QUndoCommands (ui/document/commands/) that call its model methods.
+#pragma once
+
+#include "scene/Scene.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+namespace rl {
+
+class SceneDocument : public QObject {
+    Q_OBJECT
+public:
+    explicit SceneDocument(QObject* parent = nullptr);
+
+    const Scene& scene() const { return m_scene; }
+    int bodyCount() const { return static_cast<int>(m_scene.bodies.size()); }
+    const BodyDef& body(int index) const { return m_scene.bodies.at(static_cast<size_t>(index)); }
+
+    QString filePath() const { return m_filePath; }
+    QString displayName() const;
+    QUndoStack* undoStack() { return &m_undoStack; }
+    bool isModified() const { return !m_undoStack.isClean(); }
+
+    // Replaces the whole scene (New, Open). Clears the undo history.
+    void reset(Scene scene, const QString& filePath);
+    // Loads any scene file the core reads; on failure returns false and sets errorMessage (file, object, problem).
+    bool load(const QString& path, QString* errorMessage);
+
+    // Model methods: the only way commands change the scene. Each emits the matching signal.
+    void setBody(int index, const BodyDef& body);
+    void insertBody(int index, const BodyDef& body);
+    void removeBody(int index);
+    void setWorldSettings(const WorldSettings& settings);
+    void setMaterials(const std::vector<MaterialDef>& materials);
+
+signals:
+    void sceneReset();
+    void bodyChanged(int index);
+    void bodyInserted(int index);
+    void bodyRemoved(int index);
+    void worldSettingsChanged();
+    void materialsChanged();
+    void filePathChanged(const QString& path);
+
+private:
+    Scene m_scene;
+    QString m_filePath;
+    QUndoStack m_undoStack;
+};
+
+} // namespace rl

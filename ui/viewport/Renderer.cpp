@@ -1,0 +1,333 @@
+#include "viewport/Renderer.h"
+
+#include <QDebug>
+#include <QOpenGLShaderProgram>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cstddef>
+
+// Q_INIT_RESOURCE must be used outside any namespace. It makes sure the shaders' resource is linked in even when
+// rl_ui is a static library (the linker would otherwise drop the unreferenced resource object).
+static void initShaderResources() {
+    Q_INIT_RESOURCE(shaders);
+}
+
+namespace rl {
+
+namespace {
+
+constexpr GLuint kPositionLocation = 0;
+constexpr GLuint kModelLocation = 2; // four vec4 columns: 2, 3, 4, 5
+constexpr GLuint kColourFlagsLocation = 6;
+
+std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* vertexPath, const char* fragmentPath) {
+    auto program = std::make_unique<QOpenGLShaderProgram>();
+    if (!program->addShaderFromSourceFile(QOpenGLShader::Vertex, QString::fromLatin1(vertexPath)) ||
+        !program->addShaderFromSourceFile(QOpenGLShader::Fragment, QString::fromLatin1(fragmentPath)) ||
+        !program->link()) {
+        qWarning() << "rl::Renderer: shader" << vertexPath << fragmentPath << "failed:" << program->log();
+        return nullptr;
+    }
+    return program;
+}
+
+void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::mat4& m) {
+    program.setUniformValue(name, QMatrix4x4(glm::value_ptr(m)).transposed()); // glm is column-major
+}
+void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::vec3& v) {
+    program.setUniformValue(name, QVector3D(v.x, v.y, v.z));
+}
+
+} // namespace
+
+Renderer::Renderer() = default;
+
+Renderer::~Renderer() {
+    // GL objects must have been released with the context current (Viewport's cleanup); only CPU data is left.
+}
+
+bool Renderer::initialize() {
+    initShaderResources();
+    initializeOpenGLFunctions();
+    m_meshProgram = buildProgram(":/shaders/mesh.vert", ":/shaders/mesh.frag");
+    m_outlineProgram = buildProgram(":/shaders/outline.vert", ":/shaders/flat.frag");
+    m_backgroundProgram = buildProgram(":/shaders/background.vert", ":/shaders/background.frag");
+    m_gridProgram = buildProgram(":/shaders/grid.vert", ":/shaders/grid.frag");
+    if (!m_meshProgram || !m_outlineProgram || !m_backgroundProgram || !m_gridProgram)
+        return false;
+    glGenVertexArrays(1, &m_emptyVao);
+    glGenBuffers(1, &m_instanceBuffer);
+    m_instanceBufferCapacity = 0;
+    // A new context has none of the old buffers: upload everything again.
+    m_meshesDirty = true;
+    m_instancesDirty = true;
+    m_initialized = true;
+    return true;
+}
+
+void Renderer::release() {
+    if (!m_initialized)
+        return;
+    releaseMeshes();
+    glDeleteBuffers(1, &m_instanceBuffer);
+    glDeleteVertexArrays(1, &m_emptyVao);
+    m_instanceBuffer = 0;
+    m_emptyVao = 0;
+    m_instanceBufferCapacity = 0;
+    m_meshProgram.reset();
+    m_outlineProgram.reset();
+    m_backgroundProgram.reset();
+    m_gridProgram.reset();
+    m_initialized = false;
+}
+
+void Renderer::releaseMeshes() {
+    for (MeshGl& gl : m_meshGl) {
+        glDeleteVertexArrays(1, &gl.vao);
+        glDeleteBuffers(1, &gl.vertexBuffer);
+        glDeleteBuffers(1, &gl.indexBuffer);
+    }
+    m_meshGl.clear();
+}
+
+void Renderer::setScene(const ViewportScene& scene) {
+    m_meshes = scene.meshes;
+    m_ranges.assign(m_meshes.size(), MeshRange{});
+    for (size_t m = 0; m < m_meshes.size(); ++m) {
+        const Bounds b = m_meshes[m].bounds();
+        m_ranges[m].centre = b.isEmpty() ? glm::vec3(0.0f) : b.centre();
+        m_ranges[m].radius = b.isEmpty() ? 0.0f : 0.5f * glm::length(b.size());
+    }
+    // Group instances by mesh (a counting sort) so that each mesh's instances are one contiguous range.
+    const int meshCount = static_cast<int>(m_meshes.size());
+    for (const ViewportInstance& inst : scene.instances)
+        if (inst.meshIndex >= 0 && inst.meshIndex < meshCount)
+            ++m_ranges[inst.meshIndex].instanceCount;
+    int first = 0;
+    for (MeshRange& range : m_ranges) {
+        range.firstInstance = first;
+        first += range.instanceCount;
+    }
+    m_instances.assign(first, InstanceData{});
+    m_slotOfInstance.assign(scene.instances.size(), -1);
+    std::vector<int> next(m_ranges.size());
+    for (size_t m = 0; m < m_ranges.size(); ++m)
+        next[m] = m_ranges[m].firstInstance;
+    for (size_t i = 0; i < scene.instances.size(); ++i) {
+        const int mesh = scene.instances[i].meshIndex;
+        if (mesh >= 0 && mesh < meshCount)
+            m_slotOfInstance[i] = next[mesh]++;
+    }
+    m_meshesDirty = true;
+    setInstanceAttributes(scene);
+}
+
+void Renderer::setInstanceAttributes(const ViewportScene& scene) {
+    m_anySelected = false;
+    const size_t count = std::min(scene.instances.size(), m_slotOfInstance.size());
+    for (size_t i = 0; i < count; ++i) {
+        const int slot = m_slotOfInstance[i];
+        if (slot < 0)
+            continue;
+        const ViewportInstance& inst = scene.instances[i];
+        m_instances[slot].model = inst.model;
+        m_instances[slot].colourFlags = glm::vec4(inst.colour, static_cast<float>(inst.flags));
+        if ((inst.flags & kInstanceSelected) && !(inst.flags & kInstanceHidden))
+            m_anySelected = true;
+    }
+    m_instancesDirty = true;
+}
+
+void Renderer::setTransforms(std::span<const glm::mat4> models) {
+    const size_t count = std::min(models.size(), m_slotOfInstance.size());
+    for (size_t i = 0; i < count; ++i) {
+        const int slot = m_slotOfInstance[i];
+        if (slot >= 0)
+            m_instances[slot].model = models[i];
+    }
+    m_instancesDirty = true;
+}
+
+void Renderer::uploadMeshes() {
+    releaseMeshes();
+    m_meshGl.resize(m_meshes.size());
+    for (size_t m = 0; m < m_meshes.size(); ++m) {
+        const ViewportMesh& mesh = m_meshes[m];
+        MeshGl& gl = m_meshGl[m];
+        gl.indexCount = static_cast<int>(mesh.triangles.size() * 3);
+        glGenVertexArrays(1, &gl.vao);
+        glGenBuffers(1, &gl.vertexBuffer);
+        glGenBuffers(1, &gl.indexBuffer);
+        glBindVertexArray(gl.vao);
+        glBindBuffer(GL_ARRAY_BUFFER, gl.vertexBuffer);
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(glm::vec3)),
+                     mesh.vertices.data(), GL_STATIC_DRAW);
+        glEnableVertexAttribArray(kPositionLocation);
+        glVertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gl.indexBuffer);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.triangles.size() * 3 * sizeof(uint32_t)),
+                     mesh.triangles.data(), GL_STATIC_DRAW);
+        for (GLuint column = 0; column < 4; ++column) {
+            glEnableVertexAttribArray(kModelLocation + column);
+            glVertexAttribDivisor(kModelLocation + column, 1);
+        }
+        glEnableVertexAttribArray(kColourFlagsLocation);
+        glVertexAttribDivisor(kColourFlagsLocation, 1);
+    }
+    glBindVertexArray(0);
+    m_meshesDirty = false;
+}
+
+void Renderer::uploadInstances() {
+    glBindBuffer(GL_ARRAY_BUFFER, m_instanceBuffer);
+    const size_t bytes = m_instances.size() * sizeof(InstanceData);
+    if (bytes > m_instanceBufferCapacity || bytes < m_instanceBufferCapacity / 4) {
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), m_instances.data(), GL_DYNAMIC_DRAW);
+        m_instanceBufferCapacity = bytes;
+    } else if (bytes > 0) {
+        glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(bytes), m_instances.data());
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    m_instancesDirty = false;
+}
+
+void Renderer::drawMeshes(QOpenGLShaderProgram& program, bool perMeshUniforms) {
+    constexpr GLsizei stride = sizeof(InstanceData);
+    for (size_t m = 0; m < m_meshGl.size() && m < m_ranges.size(); ++m) {
+        const MeshRange& range = m_ranges[m];
+        const MeshGl& gl = m_meshGl[m];
+        if (range.instanceCount == 0 || gl.indexCount == 0)
+            continue;
+        if (perMeshUniforms) {
+            setUniform(program, "uMeshCentre", range.centre);
+            program.setUniformValue("uMeshRadius", range.radius);
+        }
+        glBindVertexArray(gl.vao);
+        // The instance attributes start at this mesh's range: GL 3.3 has no base-instance draw.
+        glBindBuffer(GL_ARRAY_BUFFER, m_instanceBuffer);
+        const auto base = static_cast<size_t>(range.firstInstance) * stride;
+        for (GLuint column = 0; column < 4; ++column)
+            glVertexAttribPointer(kModelLocation + column, 4, GL_FLOAT, GL_FALSE, stride,
+                                  reinterpret_cast<const void*>(base + column * sizeof(glm::vec4)));
+        glVertexAttribPointer(kColourFlagsLocation, 4, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<const void*>(base + offsetof(InstanceData, colourFlags)));
+        glDrawElementsInstanced(GL_TRIANGLES, gl.indexCount, GL_UNSIGNED_INT, nullptr, range.instanceCount);
+        ++m_drawCalls;
+    }
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, const RenderOptions& options) {
+    m_drawCalls = 0;
+    if (!m_initialized)
+        return;
+    if (m_meshesDirty)
+        uploadMeshes();
+    if (m_instancesDirty)
+        uploadInstances();
+
+    const glm::mat4 viewProjection = camera.viewProjection();
+    const glm::vec3 eye = camera.eye();
+
+    // State is set in full every frame: QPainter overlays drawn after us leave theirs behind.
+    glViewport(0, 0, pixelWidth, pixelHeight);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glStencilMask(0xFF);
+    glClearColor(options.backgroundBottom.r, options.backgroundBottom.g, options.backgroundBottom.b, 1.0f);
+    glClearDepthf(1.0f);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glDisable(GL_CULL_FACE); // flat anchors are two-sided
+    glDisable(GL_BLEND);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+
+    // Background gradient, behind everything and without touching depth.
+    glDisable(GL_DEPTH_TEST);
+    m_backgroundProgram->bind();
+    setUniform(*m_backgroundProgram, "uTop", options.backgroundTop);
+    setUniform(*m_backgroundProgram, "uBottom", options.backgroundBottom);
+    glBindVertexArray(m_emptyVao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    ++m_drawCalls;
+
+    // Bodies.
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    m_meshProgram->bind();
+    setUniform(*m_meshProgram, "uViewProjection", viewProjection);
+    setUniform(*m_meshProgram, "uEye", eye);
+    // The key light sits above, to the left of and behind the camera, so the faces the user looks at are lit and
+    // neighbouring faces of a box get different shades.
+    const glm::vec3 key = glm::normalize(-camera.forward() + 1.1f * camera.up() - 0.6f * camera.right());
+    setUniform(*m_meshProgram, "uKeyDirection", key);
+    drawMeshes(*m_meshProgram, false);
+
+    // Ground grid: blended, depth-tested but not written, and pulled slightly forward so that it shows on a floor
+    // whose top face lies in the plane y = 0.
+    if (options.grid) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_LEQUAL);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(-1.0f, -4.0f);
+        const float fadeDistance = std::max(25.0f, 6.0f * camera.distance());
+        m_gridProgram->bind();
+        setUniform(*m_gridProgram, "uViewProjection", viewProjection);
+        setUniform(*m_gridProgram, "uEye", eye);
+        m_gridProgram->setUniformValue("uFadeDistance", fadeDistance);
+        m_gridProgram->setUniformValue("uCentre", QVector2D(eye.x, eye.z));
+        m_gridProgram->setUniformValue("uExtent", fadeDistance);
+        glBindVertexArray(m_emptyVao);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        ++m_drawCalls;
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+    }
+
+    // Selection outline. Pass 1 marks the selected objects in the stencil; pass 2 draws them pushed outwards in
+    // screen space where the stencil is clear, which leaves a ring of constant width around each silhouette.
+    if (m_anySelected && options.outlineWidthPixels > 0.0f) {
+        glEnable(GL_STENCIL_TEST);
+        m_outlineProgram->bind();
+        setUniform(*m_outlineProgram, "uViewProjection", viewProjection);
+        setUniform(*m_outlineProgram, "uEye", eye);
+        m_outlineProgram->setUniformValue("uViewportSize",
+                                          QVector2D(static_cast<float>(pixelWidth), static_cast<float>(pixelHeight)));
+        m_outlineProgram->setUniformValue("uColour", QVector4D(options.outlineColour.r, options.outlineColour.g,
+                                                               options.outlineColour.b, options.outlineColour.a));
+
+        glDisable(GL_DEPTH_TEST);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glDepthMask(GL_FALSE);
+        glStencilFunc(GL_ALWAYS, 1, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        m_outlineProgram->setUniformValue("uWidthPixels", 0.0f);
+        drawMeshes(*m_outlineProgram, true);
+
+        // Depth-tested at the object's nearest depth (see outline.vert): occluders hide the outline, the floor
+        // the object stands on does not.
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glStencilFunc(GL_NOTEQUAL, 1, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        m_outlineProgram->setUniformValue("uWidthPixels", options.outlineWidthPixels);
+        drawMeshes(*m_outlineProgram, true);
+
+        glDisable(GL_STENCIL_TEST);
+        glDepthMask(GL_TRUE);
+    }
+
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+
+} // namespace rl

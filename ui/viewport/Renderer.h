@@ -1,0 +1,96 @@
+// Instanced OpenGL 3.3 renderer of the viewport: background, bodies (one draw per unique mesh), selection outline
+// and ground grid. It keeps CPU copies and uploads lazily in render(), so setters work before the GL context exists.
+#pragma once
+
+#include "viewport/Camera.h"
+#include "viewport/ViewportScene.h"
+
+#include <QOpenGLExtraFunctions>
+
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <span>
+#include <vector>
+
+class QOpenGLShaderProgram;
+
+namespace rl {
+
+struct RenderOptions {
+    bool grid = true;
+    float outlineWidthPixels = 2.0f;
+    glm::vec4 outlineColour{1.0f, 0.56f, 0.12f, 1.0f}; // Blender's selection orange
+    glm::vec3 backgroundTop{0.275f, 0.275f, 0.285f};
+    glm::vec3 backgroundBottom{0.165f, 0.165f, 0.172f};
+};
+
+class Renderer : protected QOpenGLExtraFunctions {
+public:
+    Renderer();
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Both need the widget's context current. initialize() may follow release() (a re-parented QOpenGLWidget).
+    bool initialize();
+    void release();
+    bool isInitialized() const { return m_initialized; }
+
+    // Meshes and instances changed: everything is re-uploaded on the next render().
+    void setScene(const ViewportScene& scene);
+    // Colours or flags changed (selection, sleeping): only the instance buffer is re-uploaded.
+    void setInstanceAttributes(const ViewportScene& scene);
+    // Playback: new model matrices in instance order; only the instance buffer is re-uploaded.
+    void setTransforms(std::span<const glm::mat4> models);
+
+    // Draws into the bound framebuffer. pixelWidth/Height are device pixels.
+    void render(const Camera& camera, int pixelWidth, int pixelHeight, const RenderOptions& options);
+
+    int drawCallsLastFrame() const { return m_drawCalls; }
+
+private:
+    // 80 bytes per instance: the model matrix and the colour with the flags in the fourth component.
+    struct InstanceData {
+        glm::mat4 model;
+        glm::vec4 colourFlags;
+    };
+    struct MeshRange {
+        int firstInstance = 0; // into the instance buffer, which is grouped by mesh
+        int instanceCount = 0;
+        glm::vec3 centre{0.0f}; // of the mesh's box, shape coordinates: the outline grows away from it
+        float radius = 0.0f;    // half the box diagonal
+    };
+    struct MeshGl {
+        unsigned vao = 0;
+        unsigned vertexBuffer = 0;
+        unsigned indexBuffer = 0;
+        int indexCount = 0;
+    };
+
+    void uploadMeshes();
+    void uploadInstances();
+    void drawMeshes(QOpenGLShaderProgram& program, bool perMeshUniforms);
+    void releaseMeshes();
+
+    bool m_initialized = false;
+    std::unique_ptr<QOpenGLShaderProgram> m_meshProgram;
+    std::unique_ptr<QOpenGLShaderProgram> m_outlineProgram;
+    std::unique_ptr<QOpenGLShaderProgram> m_backgroundProgram;
+    std::unique_ptr<QOpenGLShaderProgram> m_gridProgram;
+    unsigned m_emptyVao = 0; // core profile needs a bound VAO even for attribute-less draws
+    unsigned m_instanceBuffer = 0;
+    size_t m_instanceBufferCapacity = 0;
+
+    std::vector<ViewportMesh> m_meshes;
+    std::vector<MeshRange> m_ranges;
+    std::vector<MeshGl> m_meshGl;          // GL objects of m_meshes, rebuilt on upload
+    std::vector<InstanceData> m_instances; // grouped by mesh
+    std::vector<int> m_slotOfInstance;     // instance index -> position in m_instances, -1 when not drawn
+    bool m_meshesDirty = false;
+    bool m_instancesDirty = false;
+    bool m_anySelected = false;
+    int m_drawCalls = 0;
+};
+
+} // namespace rl

@@ -1,0 +1,121 @@
+#include "viewport/ViewportScene.h"
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace rl {
+
+Bounds ViewportMesh::bounds() const {
+    Bounds b;
+    for (const glm::vec3& v : vertices)
+        b.extend(v);
+    return b;
+}
+
+Bounds ViewportScene::instanceBounds(int instance) const {
+    Bounds world;
+    if (instance < 0 || instance >= static_cast<int>(instances.size()))
+        return world;
+    const ViewportInstance& inst = instances[instance];
+    if (inst.meshIndex < 0 || inst.meshIndex >= static_cast<int>(meshes.size()))
+        return world;
+    const Bounds local = meshes[inst.meshIndex].bounds();
+    if (local.isEmpty())
+        return world;
+    // The eight corners of the local box, transformed: exact for the box, conservative for the mesh.
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
+                          (corner & 4) ? local.max.z : local.min.z);
+        world.extend(glm::vec3(inst.model * glm::vec4(p, 1.0f)));
+    }
+    return world;
+}
+
+Bounds ViewportScene::bounds(bool selectedOnly) const {
+    // Mesh boxes are computed once here rather than per instance: 5,000 instances often share one mesh.
+    std::vector<Bounds> meshBounds(meshes.size());
+    for (size_t m = 0; m < meshes.size(); ++m)
+        meshBounds[m] = meshes[m].bounds();
+    Bounds all;
+    for (const ViewportInstance& inst : instances) {
+        if ((inst.flags & kInstanceHidden) || (selectedOnly && !(inst.flags & kInstanceSelected)))
+            continue;
+        if (inst.meshIndex < 0 || inst.meshIndex >= static_cast<int>(meshes.size()))
+            continue;
+        const Bounds& local = meshBounds[inst.meshIndex];
+        if (local.isEmpty())
+            continue;
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
+                              (corner & 4) ? local.max.z : local.min.z);
+            all.extend(glm::vec3(inst.model * glm::vec4(p, 1.0f)));
+        }
+    }
+    return all;
+}
+
+int ViewportScene::pickBounds(const Ray& ray) const {
+    int best = -1;
+    float bestT = std::numeric_limits<float>::max();
+    for (int i = 0; i < static_cast<int>(instances.size()); ++i) {
+        if (instances[i].flags & kInstanceHidden)
+            continue;
+        const float t = intersectRayBounds(ray, instanceBounds(i));
+        if (t >= 0.0f && t < bestT) {
+            bestT = t;
+            best = i;
+        }
+    }
+    return best;
+}
+
+glm::mat4 instanceTransform(const glm::dvec3& position, const glm::dquat& orientation, const glm::mat4& shapeFrame) {
+    glm::mat4 m = glm::mat4_cast(glm::quat(glm::normalize(orientation)));
+    m[3] = glm::vec4(glm::vec3(position), 1.0f);
+    return m * shapeFrame;
+}
+
+ViewportMesh makeBoxMesh(const glm::vec3& h) {
+    ViewportMesh mesh;
+    for (int corner = 0; corner < 8; ++corner)
+        mesh.vertices.emplace_back((corner & 1) ? h.x : -h.x, (corner & 2) ? h.y : -h.y, (corner & 4) ? h.z : -h.z);
+    // Corner index bits are (x, y, z); each face is two counter-clockwise triangles seen from outside.
+    mesh.triangles = {{0, 4, 6}, {0, 6, 2},  // -x
+                      {1, 3, 7}, {1, 7, 5},  // +x
+                      {0, 1, 5}, {0, 5, 4},  // -y
+                      {2, 6, 7}, {2, 7, 3},  // +y
+                      {0, 2, 3}, {0, 3, 1},  // -z
+                      {4, 5, 7}, {4, 7, 6}}; // +z
+    return mesh;
+}
+
+ViewportMesh makeSphereMesh(float radius, int segments, int rings) {
+    segments = std::max(segments, 3);
+    rings = std::max(rings, 2);
+    ViewportMesh mesh;
+    mesh.vertices.emplace_back(0.0f, radius, 0.0f); // north pole
+    for (int r = 1; r < rings; ++r) {
+        const float theta = glm::pi<float>() * static_cast<float>(r) / static_cast<float>(rings);
+        for (int s = 0; s < segments; ++s) {
+            const float phi = glm::two_pi<float>() * static_cast<float>(s) / static_cast<float>(segments);
+            mesh.vertices.emplace_back(radius * std::sin(theta) * std::cos(phi), radius * std::cos(theta),
+                                       -radius * std::sin(theta) * std::sin(phi));
+        }
+    }
+    const uint32_t south = static_cast<uint32_t>(mesh.vertices.size());
+    mesh.vertices.emplace_back(0.0f, -radius, 0.0f);
+    auto ringVertex = [&](int r, int s) { return static_cast<uint32_t>(1 + (r - 1) * segments + (s % segments)); };
+    for (int s = 0; s < segments; ++s) {
+        mesh.triangles.push_back({0, ringVertex(1, s), ringVertex(1, s + 1)});
+        for (int r = 1; r < rings - 1; ++r) {
+            mesh.triangles.push_back({ringVertex(r, s), ringVertex(r + 1, s), ringVertex(r + 1, s + 1)});
+            mesh.triangles.push_back({ringVertex(r, s), ringVertex(r + 1, s + 1), ringVertex(r, s + 1)});
+        }
+        mesh.triangles.push_back({ringVertex(rings - 1, s), south, ringVertex(rings - 1, s + 1)});
+    }
+    return mesh;
+}
+
+} // namespace rl

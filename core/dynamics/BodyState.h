@@ -1,0 +1,119 @@
+// Runtime state of N rigid bodies in structure-of-arrays form: the hot arrays the integrators and the contact solver
+// sweep every substep, kept apart from the bookkeeping that is only read when a body is created, exported or inspected.
+#pragma once
+
+#include "common/Result.h"
+#include "math/Types.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace rl {
+
+enum BodyFlag : uint8_t {
+    kBodyStatic = 1u << 0, // infinite mass and inertia; never integrated
+    kBodyAwake = 1u << 1,  // integrated and solved; a sleeping body is skipped until something wakes it
+};
+
+// Why the inertia is stored as a diagonal in the principal frame (and not as a full body-frame tensor):
+// - the body frame is chosen to be the principal frame, so the rotation that diagonalises the tensor is folded into
+//   `orientation`. The inverse inertia is then 3 numbers instead of 6, its inverse is a division per axis, and the
+//   implicit gyroscopic step (Gyroscopic.h) works on a diagonal matrix, which keeps its 3x3 Newton solve cheap;
+// - the price is that `orientation` is not the user's shape orientation. The constant rotation between the two is
+//   kept in the bookkeeping (`BodyInfo::shapeFromPrincipal`), and shapeOrientation() undoes it for exports.
+// Positions are the centre of mass, again for the solver's sake; the shape origin is recovered the same way.
+
+// The speed clamp. It exists so that a bad contact or a stiff setting cannot produce a runaway body that tunnels
+// through the world or overflows to infinity; a scene that hits it is not simulated faithfully, and the counters
+// below say so. The values are limits on what one substep may do, not physical constants.
+struct SpeedLimits {
+    // m/s. Well above anything the sample scenes do (the fastest, DESIGN.md's "Shot", starts at 300 m/s).
+    Real maxLinearSpeed = 1000.0;
+    // rad per substep. Box2D's choice: a quarter turn is the largest rotation per substep for which the linearised
+    // contact constraints still point the right way, so faster spins are clamped rather than solved wrongly.
+    Real maxRotationPerSubstep = 0.25 * kPi;
+};
+
+// How often the clamp changed a velocity since the counters were last reset. Non-zero means "this run was clamped".
+struct ClampCounters {
+    uint64_t linear = 0;
+    uint64_t angular = 0;
+    bool operator==(const ClampCounters&) const = default;
+};
+
+// Bookkeeping: read when a body is created, exported or shown in the inspector, never in the substep loop.
+struct BodyInfo {
+    Real mass = 0.0;                          // kg; 0 for static bodies
+    Vec3 principalMoments{0.0};               // kg m^2, in the order of the principal frame's axes
+    Quat shapeFromPrincipal = identityQuat(); // rotation from shape coordinates to the principal frame
+    Vec3 comInShape{0.0};                     // centre of mass in shape coordinates
+};
+
+// What a new body needs. Inertia is a full tensor about the centre of mass in *world* axes at the given orientation,
+// as BodyProperties and MassProperties produce it; addBody() diagonalises it.
+struct BodyInit {
+    Vec3 centerOfMass{0.0};            // world
+    Quat orientation = identityQuat(); // shape coordinates -> world
+    Vec3 comInShape{0.0};              // centre of mass in shape coordinates (bookkeeping only)
+    Real mass = 1.0;                   // kg, ignored for static bodies
+    Mat3 inertia{1.0};                 // kg m^2, world axes, about the centre of mass; ignored for static bodies
+    Vec3 linearVelocity{0.0};          // m/s, world
+    Vec3 angularVelocity{0.0};         // rad/s, world
+    Real linearDamping = 0.0;          // 1/s, added to the world's
+    Real angularDamping = 0.0;         // 1/s, added to the world's
+    bool isStatic = false;
+};
+
+struct BodyState {
+    // ---- hot: swept by the integrators and the solver every substep, indexed by body ----
+    std::vector<Vec3> position;        // centre of mass, world
+    std::vector<Quat> orientation;     // principal frame -> world
+    std::vector<Vec3> linearVelocity;  // m/s, world
+    std::vector<Vec3> angularVelocity; // rad/s, world
+    std::vector<Real> invMass;         // 1/kg; 0 for static bodies
+    std::vector<Vec3> invInertia;      // 1/(kg m^2), diagonal in the principal frame; 0 for static bodies
+    std::vector<Real> linearDamping;   // 1/s
+    std::vector<Real> angularDamping;  // 1/s
+    std::vector<uint8_t> flags;        // BodyFlag bits
+
+    // ---- substep scratch: written by integrateVelocities(), read by integratePositions() (Integrator.h) ----
+    // The motion the smooth forces alone prescribe over the substep. The position phase adds what the contact solver
+    // changed on top of it, so each integrator keeps its own accuracy where no contact acts.
+    std::vector<Vec3> smoothLinearVelocity;
+    std::vector<Vec3> smoothDisplacement;
+    std::vector<Vec3> smoothAngularVelocity;
+    std::vector<Quat> smoothRotation; // world-frame rotation over the substep
+
+    // ---- bookkeeping ----
+    std::vector<BodyInfo> info;
+    SpeedLimits limits;
+    ClampCounters clampCounters;
+
+    uint32_t size() const { return static_cast<uint32_t>(position.size()); }
+    void clear();
+    void reserve(uint32_t n);
+
+    // Validates the definition (finite numbers, positive mass, positive-definite inertia satisfying the triangle
+    // inequality); bad input is an Error and leaves the state unchanged. Returns the new body's index.
+    Result<uint32_t> addBody(const BodyInit& init);
+
+    bool isStatic(uint32_t i) const { return (flags[i] & kBodyStatic) != 0; }
+    bool isAwake(uint32_t i) const { return (flags[i] & kBodyAwake) != 0; }
+    // Awake and not static: the bodies the integrators move.
+    bool isMoving(uint32_t i) const { return (flags[i] & (kBodyStatic | kBodyAwake)) == kBodyAwake; }
+
+    Mat3 worldInverseInertia(uint32_t i) const;
+    Mat3 worldInertia(uint32_t i) const;
+    Real kineticEnergy(uint32_t i) const;                           // translational + rotational, J
+    Real rotationalEnergy(uint32_t i) const;                        // J
+    Vec3 angularMomentum(uint32_t i) const;                         // about the body's centre of mass, world, kg m^2/s
+    Vec3 angularMomentumAbout(uint32_t i, const Vec3& point) const; // spin plus orbital part m (x - p) x v
+    Real totalKineticEnergy() const;
+    Vec3 totalAngularMomentum(const Vec3& point) const;
+
+    // The user's view of the body: the orientation of its shape coordinates and where their origin is in the world.
+    Quat shapeOrientation(uint32_t i) const;
+    Vec3 shapeOrigin(uint32_t i) const;
+};
+
+} // namespace rl

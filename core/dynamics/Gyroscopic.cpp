@@ -1,0 +1,105 @@
+#include "dynamics/Gyroscopic.h"
+
+#include <cmath>
+
+namespace rl {
+
+namespace {
+
+Mat3 skew(const Vec3& v) {
+    // glm is column-major: m[c][r]. skew(v) * x == cross(v, x).
+    return Mat3(Vec3(0.0, v.z, -v.y), Vec3(-v.z, 0.0, v.x), Vec3(v.y, -v.x, 0.0));
+}
+
+Mat3 diagonal(const Vec3& d) {
+    Mat3 m(0.0);
+    m[0][0] = d.x;
+    m[1][1] = d.y;
+    m[2][2] = d.z;
+    return m;
+}
+
+Quat halfRate(const Quat& q, const Vec3& bodyOmega) {
+    return 0.5 * (q * Quat(0.0, bodyOmega.x, bodyOmega.y, bodyOmega.z));
+}
+
+} // namespace
+
+Vec3 eulerAngularAcceleration(const Vec3& bodyOmega, const Vec3& inertia) {
+    return -glm::cross(bodyOmega, inertia * bodyOmega) / inertia;
+}
+
+Vec3 gyroscopicExplicit(const Vec3& bodyOmega, const Vec3& inertia, Real dt) {
+    return bodyOmega + dt * eulerAngularAcceleration(bodyOmega, inertia);
+}
+
+Vec3 gyroscopicImplicit(const Vec3& bodyOmega, const Vec3& inertia, Real dt) {
+    const Vec3 momentum = inertia * bodyOmega;
+    const Vec3 residual = dt * glm::cross(bodyOmega, momentum);
+    const Mat3 jacobian = diagonal(inertia) + dt * (skew(bodyOmega) * diagonal(inertia) - skew(momentum));
+    const Real det = glm::determinant(jacobian);
+    // J is I plus a term of order dt |w| I, so its determinant is near det(I) > 0 for any step the clamp allows.
+    if (!std::isfinite(det) || std::abs(det) < 1e-300)
+        return bodyOmega;
+    return bodyOmega - glm::inverse(jacobian) * residual;
+}
+
+void rotationRk4(Quat& orientation, Vec3& bodyOmega, const Vec3& inertia, Real damping, Real dt) {
+    auto omegaRate = [&](const Vec3& w) { return eulerAngularAcceleration(w, inertia) - damping * w; };
+    const Quat q0 = orientation;
+    const Vec3 w0 = bodyOmega;
+    const Quat k1q = halfRate(q0, w0);
+    const Vec3 k1w = omegaRate(w0);
+    const Quat q1 = q0 + (0.5 * dt) * k1q;
+    const Vec3 w1 = w0 + (0.5 * dt) * k1w;
+    const Quat k2q = halfRate(q1, w1);
+    const Vec3 k2w = omegaRate(w1);
+    const Quat q2 = q0 + (0.5 * dt) * k2q;
+    const Vec3 w2 = w0 + (0.5 * dt) * k2w;
+    const Quat k3q = halfRate(q2, w2);
+    const Vec3 k3w = omegaRate(w2);
+    const Quat q3 = q0 + dt * k3q;
+    const Vec3 w3 = w0 + dt * k3w;
+    const Quat k4q = halfRate(q3, w3);
+    const Vec3 k4w = omegaRate(w3);
+    orientation = glm::normalize(q0 + (dt / 6.0) * (k1q + 2.0 * k2q + 2.0 * k3q + k4q));
+    bodyOmega = w0 + (dt / 6.0) * (k1w + 2.0 * k2w + 2.0 * k3w + k4w);
+}
+
+Quat rotationFromVector(const Vec3& theta) {
+    const Real angle = glm::length(theta);
+    const Real half = 0.5 * angle;
+    // sin(a/2)/a by its series near 0, where the quotient loses all digits; the series error there is below 1e-20.
+    const Real sinOverAngle = angle < 1e-5 ? 0.5 - angle * angle / 48.0 : std::sin(half) / angle;
+    return Quat(std::cos(half), sinOverAngle * theta.x, sinOverAngle * theta.y, sinOverAngle * theta.z);
+}
+
+bool clampSpeeds(Vec3& linearVelocity, Vec3& angularVelocity, Real dt, const SpeedLimits& limits,
+                 ClampCounters& counters) {
+    bool clamped = false;
+    const Real speed = glm::length(linearVelocity);
+    if (!std::isfinite(speed)) {
+        // A non-finite velocity can only come from non-finite input upstream; stopping the body keeps NaN contained.
+        linearVelocity = Vec3(0.0);
+        ++counters.linear;
+        clamped = true;
+    } else if (speed > limits.maxLinearSpeed) {
+        linearVelocity *= limits.maxLinearSpeed / speed;
+        ++counters.linear;
+        clamped = true;
+    }
+    const Real maxAngularSpeed = limits.maxRotationPerSubstep / dt;
+    const Real spin = glm::length(angularVelocity);
+    if (!std::isfinite(spin)) {
+        angularVelocity = Vec3(0.0);
+        ++counters.angular;
+        clamped = true;
+    } else if (spin > maxAngularSpeed) {
+        angularVelocity *= maxAngularSpeed / spin;
+        ++counters.angular;
+        clamped = true;
+    }
+    return clamped;
+}
+
+} // namespace rl

@@ -1,0 +1,105 @@
+#include "dynamics/Integrator.h"
+
+#include "dynamics/Gyroscopic.h"
+
+namespace rl {
+
+namespace {
+
+// Body-frame inertia from the stored inverse. Callers only reach here for dynamic bodies, whose inverse is positive.
+Vec3 inertiaOf(const BodyState& state, uint32_t i) {
+    return state.info[i].principalMoments;
+}
+
+void angularVelocityPhase(BodyState& state, uint32_t i, Real dt, Real c, Integrator integrator) {
+    const Quat q = state.orientation[i];
+    const Vec3 inertia = inertiaOf(state, i);
+    Vec3& w = state.angularVelocity[i];
+    Vec3 wb = glm::conjugate(q) * w;
+    switch (integrator) {
+    case Integrator::ExplicitEuler:
+        state.smoothRotation[i] = rotationFromVector(w * dt); // the orientation advances with the old w
+        wb = gyroscopicExplicit(wb, inertia, dt) * detail::explicitDecay(c, dt);
+        w = q * wb;
+        break;
+    case Integrator::SymplecticEuler:
+        wb = gyroscopicImplicit(wb, inertia, dt) * detail::implicitDecay(c, dt);
+        w = q * wb;
+        state.smoothRotation[i] = rotationFromVector(w * dt);
+        break;
+    case Integrator::Verlet:
+        wb = gyroscopicExplicit(wb, inertia, 0.5 * dt) * detail::explicitDecay(c, 0.5 * dt);
+        w = q * wb;
+        state.smoothRotation[i] = rotationFromVector(w * dt);
+        break;
+    case Integrator::Rk4: {
+        Quat qEnd = q;
+        if (c * dt > 2.0) {
+            // Stiff damping (see Integrator.h): RK4 for the torque-free part, exact decay for the damping.
+            rotationRk4(qEnd, wb, inertia, 0.0, dt);
+            wb *= std::exp(-c * dt);
+        } else {
+            rotationRk4(qEnd, wb, inertia, c, dt);
+        }
+        w = qEnd * wb;
+        state.smoothRotation[i] = glm::normalize(qEnd * glm::conjugate(q));
+        break;
+    }
+    }
+    state.smoothAngularVelocity[i] = w;
+}
+
+} // namespace
+
+void integrateVelocities(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,
+                         Integrator integrator, bool rotationEnabled) {
+    const uint32_t end = std::min(range.end, state.size());
+    const auto gravityField = [&gravity](const Vec3&) { return gravity; };
+    for (uint32_t i = range.begin; i < end; ++i) {
+        if (!state.isMoving(i))
+            continue;
+        const Real c = damping.linear + state.linearDamping[i];
+        translationVelocityPhase(integrator, state.position[i], state.linearVelocity[i], dt, c, gravityField,
+                                 state.smoothDisplacement[i], state.smoothLinearVelocity[i]);
+        if (rotationEnabled)
+            angularVelocityPhase(state, i, dt, damping.angular + state.angularDamping[i], integrator);
+        // The clamp runs after the smooth update so that gravity cannot push a body past it; whatever it removes the
+        // position phase treats like a solver change.
+        Vec3 angular = rotationEnabled ? state.angularVelocity[i] : Vec3(0.0);
+        clampSpeeds(state.linearVelocity[i], angular, dt, state.limits, state.clampCounters);
+        if (rotationEnabled)
+            state.angularVelocity[i] = angular;
+    }
+}
+
+void integratePositions(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,
+                        Integrator integrator, bool rotationEnabled) {
+    const uint32_t end = std::min(range.end, state.size());
+    const auto gravityField = [&gravity](const Vec3&) { return gravity; };
+    for (uint32_t i = range.begin; i < end; ++i) {
+        if (!state.isMoving(i))
+            continue;
+        const Real c = damping.linear + state.linearDamping[i];
+        translationPositionPhase(integrator, state.position[i], state.linearVelocity[i], dt, c, gravityField,
+                                 state.smoothDisplacement[i], state.smoothLinearVelocity[i]);
+        if (!rotationEnabled)
+            continue;
+        Quat& q = state.orientation[i];
+        Vec3& w = state.angularVelocity[i];
+        const Vec3 solverChange = w - state.smoothAngularVelocity[i];
+        q = glm::normalize(rotationFromVector(solverChange * dt) * state.smoothRotation[i] * q);
+        if (integrator == Integrator::Verlet) {
+            const Real ca = damping.angular + state.angularDamping[i];
+            const Vec3 wb = glm::conjugate(q) * w;
+            w = q * (gyroscopicImplicit(wb, inertiaOf(state, i), 0.5 * dt) * detail::implicitDecay(ca, 0.5 * dt));
+        }
+    }
+}
+
+void integrateSmooth(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,
+                     Integrator integrator, bool rotationEnabled) {
+    integrateVelocities(state, range, dt, gravity, damping, integrator, rotationEnabled);
+    integratePositions(state, range, dt, gravity, damping, integrator, rotationEnabled);
+}
+
+} // namespace rl

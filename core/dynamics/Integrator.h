@@ -1,0 +1,152 @@
+// The four integrators for the smooth part of the motion (gravity, damping, torque-free rotation with the gyroscopic
+// term), each split into a velocity phase and a position phase so that the contact solver can run between the two.
+#pragma once
+
+#include "dynamics/BodyState.h"
+#include "math/Types.h"
+#include "scene/WorldSettings.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rl {
+
+// How the integrators meet the velocity solver. The world's substep is
+//     integrateVelocities -> warm start, solve contacts -> integratePositions -> relax
+// and every integrator is written as "what the smooth forces do over the substep" (velocity phase, which also records
+// that smooth motion in BodyState's scratch arrays) plus "what the solver changed" (position phase). Where the solver
+// changed nothing, each integrator is exactly its textbook self; where it did, the contact impulse is an impulse at the
+// start of the substep: it moves the position by (its velocity change) * dt. So with contacts every scheme is first
+// order in position; the integrators differ in free flight, in rotation and in damping.
+//
+//   explicit-euler    velocity phase: remember x += v_old dt, then v += a dt (damping (1 - c dt), never below 0).
+//                     position phase: x += v_old dt + (solver's change of v) dt. Orientation: q advances by w_old.
+//                     Rotation: explicit Euler on Euler's equations, which gains energy (see Gyroscopic.h).
+//                     The original project's scheme. First order.
+//   symplectic-euler  velocity phase: v = (v + a dt) / (1 + c dt) (implicit damping, stable for any c), gyroscopic
+//                     term implicit. position phase: x += v dt, q advances by the new w. Box2D's scheme. First order;
+//                     symplectic for position-dependent forces, so oscillators keep their energy on average.
+//   verlet            velocity Verlet as kick-drift-kick. velocity phase: half kick v += (a - c v) dt/2, gyroscopic
+//                     half step explicit. The solver sees the half-kicked velocity. position phase: drift x += v dt,
+//                     q advances by the mid-step w, then the closing half kick v = (v + a dt/2) / (1 + c dt/2) with
+//                     the gyroscopic half step implicit (the adjoint of the opening half, which makes the pair
+//                     symmetric). Second order; exact in position for constant gravity. Because the closing kick
+//                     runs after the solver, a body resting on the ground ends the substep with v = g dt/2 into it;
+//                     the next solve (or the world's relax pass) removes it before it can move the body.
+//   rk4               velocity phase: classical RK4 on (x, v) with a(x) - c v, and on (q, w_body) with Euler's
+//                     equations; records the RK4 displacement and rotation. position phase: applies them plus the
+//                     solver's change. Fourth order (exact in position for constant gravity without damping).
+//
+// Stiff damping: when c dt exceeds 2, beyond which explicit updates would overshoot (for RK4 its stability bound is
+// about 2.78), every scheme uses the exact decay for that step instead of amplifying. This keeps bad settings from
+// producing NaN; it is not an accuracy regime anyone should run in.
+
+struct BodyRange {
+    uint32_t begin = 0;
+    uint32_t end = 0; // one past the last
+};
+
+inline BodyRange allBodies(const BodyState& state) {
+    return {0, state.size()};
+}
+
+// World-level damping rates, 1/s. Each body's own rates (BodyState::linearDamping...) are added: two independent linear
+// drags add like parallel dashpots.
+struct Damping {
+    Real linear = 0.0;
+    Real angular = 0.0;
+};
+
+// ---- The substep phases for bodies (only awake, non-static bodies in the range are touched) ----
+
+// Applies gravity, damping and (when rotationEnabled) the gyroscopic term over dt, records the smooth motion, and
+// applies BodyState::limits, counting in BodyState::clampCounters. When rotation is disabled (the original project's
+// linear-only mode), angular velocity and orientation are left exactly as they are.
+void integrateVelocities(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,
+                         Integrator integrator, bool rotationEnabled);
+
+// Advances positions and orientations; for verlet also applies the closing half kick.
+void integratePositions(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,
+                        Integrator integrator, bool rotationEnabled);
+
+// Both phases with no solver in between: the free motion over one substep.
+void integrateSmooth(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,
+                     Integrator integrator, bool rotationEnabled);
+
+// ---- The translation kernel, shared by the bodies above and by the accuracy study's 1D problems ----
+// One particle (V = Real or Vec3) under x'' = a(x) - c x'. Same two phases and same scratch as above: the velocity
+// phase writes the smooth displacement and velocity, the position phase adds what changed the velocity in between.
+
+namespace detail {
+// Factor for an explicit decay over h: 1 - c h, or the exact exp(-c h) where 1 - c h would overshoot (see above).
+inline Real explicitDecay(Real c, Real h) {
+    return c * h > 2.0 ? std::exp(-c * h) : std::max(0.0, 1.0 - c * h);
+}
+// Factor for an implicit decay over h: 1 / (1 + c h). Stable for any c >= 0.
+inline Real implicitDecay(Real c, Real h) {
+    return 1.0 / (1.0 + c * h);
+}
+} // namespace detail
+
+template <class V, class Accel>
+void translationVelocityPhase(Integrator integrator, const V& x, V& v, Real dt, Real c, const Accel& accel,
+                              V& smoothDisplacement, V& smoothVelocity) {
+    switch (integrator) {
+    case Integrator::ExplicitEuler:
+        smoothDisplacement = v * dt;
+        v = v * detail::explicitDecay(c, dt) + accel(x) * dt;
+        break;
+    case Integrator::SymplecticEuler:
+        v = (v + accel(x) * dt) * detail::implicitDecay(c, dt);
+        smoothDisplacement = v * dt;
+        break;
+    case Integrator::Verlet:
+        v = v * detail::explicitDecay(c, 0.5 * dt) + accel(x) * (0.5 * dt);
+        smoothDisplacement = v * dt;
+        break;
+    case Integrator::Rk4: {
+        if (c * dt > 2.0) {
+            // Stiff damping: exact solution of v' = a - c v with a frozen at x (see the header comment).
+            const V a = accel(x);
+            const Real decay = std::exp(-c * dt);
+            smoothDisplacement = a * (dt / c) + (v - a / c) * ((1.0 - decay) / c);
+            v = a / c + (v - a / c) * decay;
+            break;
+        }
+        const V a1 = accel(x) - v * c;
+        const V v1 = v;
+        const V x2 = x + v1 * (0.5 * dt);
+        const V v2 = v + a1 * (0.5 * dt);
+        const V a2 = accel(x2) - v2 * c;
+        const V x3 = x + v2 * (0.5 * dt);
+        const V v3 = v + a2 * (0.5 * dt);
+        const V a3 = accel(x3) - v3 * c;
+        const V x4 = x + v3 * dt;
+        const V v4 = v + a3 * dt;
+        const V a4 = accel(x4) - v4 * c;
+        smoothDisplacement = (v1 + v2 * 2.0 + v3 * 2.0 + v4) * (dt / 6.0);
+        v = v + (a1 + a2 * 2.0 + a3 * 2.0 + a4) * (dt / 6.0);
+        break;
+    }
+    }
+    smoothVelocity = v;
+}
+
+template <class V, class Accel>
+void translationPositionPhase(Integrator integrator, V& x, V& v, Real dt, Real c, const Accel& accel,
+                              const V& smoothDisplacement, const V& smoothVelocity) {
+    x = x + smoothDisplacement + (v - smoothVelocity) * dt;
+    if (integrator == Integrator::Verlet)
+        v = (v + accel(x) * (0.5 * dt)) * detail::implicitDecay(c, 0.5 * dt);
+}
+
+// One free step of the kernel (no solver between the phases).
+template <class V, class Accel>
+void translationStep(Integrator integrator, V& x, V& v, Real dt, Real c, const Accel& accel) {
+    V displacement = v;
+    V velocity = v;
+    translationVelocityPhase(integrator, x, v, dt, c, accel, displacement, velocity);
+    translationPositionPhase(integrator, x, v, dt, c, accel, displacement, velocity);
+}
+
+} // namespace rl

@@ -1,0 +1,141 @@
+#include "collision/BroadPhase.h"
+
+#include <algorithm>
+#include <cassert>
+
+namespace rl {
+
+BroadPhase::BroadPhase(const BroadPhaseSettings& settings)
+    : m_trees{DynamicTree(settings.dynamicTree), DynamicTree(settings.staticTree)} {}
+
+static Error badBox(uint32_t bodyId) {
+    Error e;
+    e.object = "body " + std::to_string(bodyId);
+    e.message = "bounding box is not finite or has min > max";
+    return e;
+}
+
+void BroadPhase::markMoved(ProxyKey key) {
+    std::vector<uint8_t>& flags = m_moved[index(key.kind)];
+    if (flags[key.proxy] == 0) {
+        flags[key.proxy] = 1;
+        m_moveBuffer.push_back(key);
+    }
+}
+
+Result<ProxyKey> BroadPhase::createProxy(const Aabb& tightBox, uint32_t bodyId, ProxyKind kind) {
+    if (!tightBox.isValid())
+        return badBox(bodyId);
+    const ProxyKey key{m_trees[index(kind)].createProxy(tightBox, bodyId), kind};
+    std::vector<uint8_t>& flags = m_moved[index(kind)];
+    if (flags.size() <= static_cast<size_t>(key.proxy))
+        flags.resize(static_cast<size_t>(key.proxy) + 1, 0);
+    markMoved(key);
+    return key;
+}
+
+void BroadPhase::destroyProxy(ProxyKey key) {
+    assert(m_trees[index(key.kind)].isProxy(key.proxy));
+    // The id may be reused by the next createProxy, so nothing may refer to it after this.
+    if (isMoved(key)) {
+        m_moved[index(key.kind)][key.proxy] = 0;
+        std::erase(m_moveBuffer, key);
+    }
+    std::erase_if(m_pairs, [&](const BroadPhasePair& p) { return p.proxyA == key || p.proxyB == key; });
+    m_trees[index(key.kind)].destroyProxy(key.proxy);
+}
+
+Status BroadPhase::moveProxy(ProxyKey key, const Aabb& tightBox, const Vec3& displacement) {
+    DynamicTree& tree = m_trees[index(key.kind)];
+    assert(tree.isProxy(key.proxy));
+    if (!tightBox.isValid())
+        return badBox(tree.userId(key.proxy));
+    if (tree.moveProxy(key.proxy, tightBox, displacement))
+        markMoved(key);
+    return Ok{};
+}
+
+void BroadPhase::touchProxy(ProxyKey key) {
+    assert(m_trees[index(key.kind)].isProxy(key.proxy));
+    markMoved(key);
+}
+
+void BroadPhase::addCandidate(ProxyKey a, ProxyKey b) {
+    const uint32_t idA = bodyId(a);
+    const uint32_t idB = bodyId(b);
+    if (idA < idB)
+        m_candidates.push_back({idA, idB, a, b});
+    else
+        m_candidates.push_back({idB, idA, b, a});
+}
+
+void BroadPhase::updatePairs() {
+    m_candidates.clear();
+    m_added.clear();
+    m_removed.clear();
+    m_stats = {};
+    m_stats.movedProxies = static_cast<int32_t>(m_moveBuffer.size());
+
+    const DynamicTree& dynamicTree = m_trees[index(ProxyKind::Dynamic)];
+    const DynamicTree& staticTree = m_trees[index(ProxyKind::Static)];
+
+    // Each overlap involving a moved proxy is found from exactly one side: when both proxies moved, only the
+    // query of the dynamic one with the larger id (or the dynamic one, against a static) records it.
+    for (const ProxyKey key : m_moveBuffer) {
+        const Aabb box = fatAabb(key);
+        if (key.kind == ProxyKind::Dynamic) {
+            dynamicTree.query(box, [&](int32_t other) {
+                const ProxyKey otherKey{other, ProxyKind::Dynamic};
+                if (other == key.proxy || (isMoved(otherKey) && other < key.proxy))
+                    return true;
+                addCandidate(key, otherKey);
+                return true;
+            });
+            staticTree.query(box, [&](int32_t other) {
+                addCandidate(key, ProxyKey{other, ProxyKind::Static});
+                return true;
+            });
+        } else {
+            dynamicTree.query(box, [&](int32_t other) {
+                const ProxyKey otherKey{other, ProxyKind::Dynamic};
+                if (!isMoved(otherKey))
+                    addCandidate(key, otherKey);
+                return true;
+            });
+        }
+    }
+    m_stats.candidates = static_cast<int32_t>(m_candidates.size());
+    std::sort(m_candidates.begin(), m_candidates.end());
+    m_candidates.erase(std::unique(m_candidates.begin(), m_candidates.end()), m_candidates.end());
+
+    // Old pairs can only stop overlapping if one of their proxies got a new fat box, i.e. moved.
+    m_scratch.clear();
+    m_scratch.reserve(m_pairs.size());
+    for (const BroadPhasePair& p : m_pairs) {
+        if ((isMoved(p.proxyA) || isMoved(p.proxyB)) && !fatAabb(p.proxyA).overlaps(fatAabb(p.proxyB)))
+            m_removed.push_back(p);
+        else
+            m_scratch.push_back(p);
+    }
+
+    // Candidates not already kept are new. Both lists are sorted, so one merge walk finds them.
+    size_t k = 0;
+    for (const BroadPhasePair& c : m_candidates) {
+        while (k < m_scratch.size() && m_scratch[k] < c)
+            ++k;
+        if (k == m_scratch.size() || m_scratch[k] != c)
+            m_added.push_back(c);
+    }
+
+    m_pairs.clear();
+    m_pairs.reserve(m_scratch.size() + m_added.size());
+    std::merge(m_scratch.begin(), m_scratch.end(), m_added.begin(), m_added.end(), std::back_inserter(m_pairs));
+
+    for (const ProxyKey key : m_moveBuffer)
+        m_moved[index(key.kind)][key.proxy] = 0;
+    m_moveBuffer.clear();
+    m_stats.addedPairs = static_cast<int32_t>(m_added.size());
+    m_stats.removedPairs = static_cast<int32_t>(m_removed.size());
+}
+
+} // namespace rl

@@ -16,12 +16,12 @@ void paintAxisGizmo(QPainter& painter, const Camera& camera, const QPointF& cent
         float depth = 0.0f; // view-space z: larger is nearer the viewer
         QPointF tip;
     };
-    std::array<Axis, 6> axes{{{{1, 0, 0}, QColor(232, 64, 80), "X"},
-                              {{0, 1, 0}, QColor(120, 200, 40), "Y"},
-                              {{0, 0, 1}, QColor(64, 128, 240), "Z"},
-                              {{-1, 0, 0}, QColor(232, 64, 80), nullptr},
-                              {{0, -1, 0}, QColor(120, 200, 40), nullptr},
-                              {{0, 0, -1}, QColor(64, 128, 240), nullptr}}};
+    std::array<Axis, 6> axes{{{{1, 0, 0}, QColor(232, 64, 80), "X", 0.0f, {}},
+                              {{0, 1, 0}, QColor(120, 200, 40), "Y", 0.0f, {}},
+                              {{0, 0, 1}, QColor(64, 128, 240), "Z", 0.0f, {}},
+                              {{-1, 0, 0}, QColor(232, 64, 80), nullptr, 0.0f, {}},
+                              {{0, -1, 0}, QColor(120, 200, 40), nullptr, 0.0f, {}},
+                              {{0, 0, -1}, QColor(64, 128, 240), nullptr, 0.0f, {}}}};
     const glm::mat3 rotation(camera.view()); // world -> view, rotation part only
     for (Axis& axis : axes) {
         const glm::vec3 v = rotation * axis.direction;

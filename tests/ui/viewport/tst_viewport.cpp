@@ -1,0 +1,410 @@
+// Tests of the viewport widget on a real GL context (xcb under Xvfb, Mesa llvmpipe): it draws, highlights the
+// selection, picks by click and by box, moves the camera, and renders 5,000 instances (frame time printed).
+#include "viewport/Viewport.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QSurfaceFormat>
+#include <QTest>
+#include <QWheelEvent>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <random>
+
+namespace {
+
+// Test scene: a grey floor anchor with its top at y = 0 and three boxes standing on it, red, green and blue.
+rl::ViewportScene makeBoxesScene() {
+    rl::ViewportScene scene;
+    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(5.0f, 0.25f, 5.0f)));
+    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(0.5f)));
+    rl::ViewportInstance floor;
+    floor.meshIndex = 0;
+    floor.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -0.25f, 0.0f));
+    floor.colour = glm::vec3(0.9f, 0.1f, 0.9f); // ignored: anchors are grey
+    floor.flags = rl::kInstanceAnchor;
+    scene.instances.push_back(floor);
+    const glm::vec3 colours[] = {{0.85f, 0.15f, 0.12f}, {0.2f, 0.75f, 0.25f}, {0.15f, 0.35f, 0.9f}};
+    for (int i = 0; i < 3; ++i) {
+        rl::ViewportInstance box;
+        box.meshIndex = 1;
+        box.model = rl::instanceTransform(glm::dvec3(-2.0 + 2.0 * i, 0.5, 0.0),
+                                          glm::angleAxis(0.3 * i, glm::dvec3(0.0, 1.0, 0.0)));
+        box.colour = colours[i];
+        scene.instances.push_back(box);
+    }
+    return scene;
+}
+
+// The pick function an owner would provide, here a plain ray-vs-world-box test over the scene's instances.
+int pickByBoxes(const rl::ViewportScene& scene, const rl::Ray& ray) {
+    int best = -1;
+    float bestT = 1e30f;
+    for (int i = 0; i < static_cast<int>(scene.instances.size()); ++i) {
+        const float t = rl::intersectRayBounds(ray, scene.instanceBounds(i));
+        if (t >= 0.0f && t < bestT) {
+            bestT = t;
+            best = i;
+        }
+    }
+    return best;
+}
+
+int countPixelsNear(const QImage& image, const QColor& colour, int tolerance) {
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            if (std::abs(c.red() - colour.red()) <= tolerance && std::abs(c.green() - colour.green()) <= tolerance &&
+                std::abs(c.blue() - colour.blue()) <= tolerance)
+                ++count;
+        }
+    return count;
+}
+
+QPoint projectToPixel(const rl::Camera& camera, const glm::vec3& world) {
+    const glm::vec3 p = camera.project(world);
+    return QPoint(static_cast<int>(p.x), static_cast<int>(p.y));
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values.empty() ? 0.0 : values[values.size() / 2];
+}
+
+} // namespace
+
+class TestViewport : public QObject {
+    Q_OBJECT
+public:
+    static void initMain();
+
+private slots:
+    void init();
+    void cleanup();
+    void drawsBodiesGridAndBackground();
+    void selectionShowsOrangeOutline();
+    void clickSelectsTheBoxUnderTheCursor();
+    void boxSelectTakesInstancesWhoseCentreIsInside();
+    void mouseAndKeysMoveTheCamera();
+    void setTransformsMovesBodies();
+    void fiveThousandInstances();
+
+private:
+    void showViewport(int width, int height);
+    QImage grab();
+
+    std::unique_ptr<rl::Viewport> m_viewport;
+};
+
+void TestViewport::initMain() {
+    // Qt wants a private runtime directory; Xvfb sessions often have none.
+    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
+        const QString dir = QDir::tempPath() + QStringLiteral("/rl-xdg-runtime");
+        QDir().mkpath(dir);
+        QFile::setPermissions(dir, QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+        qputenv("XDG_RUNTIME_DIR", dir.toLocal8Bit());
+    }
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setStencilBufferSize(8);
+    QSurfaceFormat::setDefaultFormat(format);
+}
+
+void TestViewport::init() {
+    m_viewport = std::make_unique<rl::Viewport>();
+}
+
+void TestViewport::cleanup() {
+    m_viewport.reset();
+}
+
+void TestViewport::showViewport(int width, int height) {
+    m_viewport->resize(width, height);
+    m_viewport->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_viewport.get()));
+    m_viewport->grabFramebuffer(); // makes sure initializeGL has run
+    QVERIFY2(m_viewport->isRendererReady(), "shaders failed to build (see the warnings above)");
+}
+
+QImage TestViewport::grab() {
+    QImage image = m_viewport->grabFramebuffer();
+    return image.convertToFormat(QImage::Format_RGB32);
+}
+
+void TestViewport::drawsBodiesGridAndBackground() {
+    m_viewport->setScene(makeBoxesScene());
+    showViewport(640, 480);
+    m_viewport->frameAll();
+    const QImage image = grab();
+    image.save(QDir::tempPath() + QStringLiteral("/rl_viewport_boxes.png"));
+    QCOMPARE(image.size(), QSize(640, 480) * m_viewport->devicePixelRatio());
+
+    // Background: a vertical gradient from lighter at the top to darker at the bottom (the corners are sky).
+    const QColor top = image.pixelColor(image.width() - 5, 2);
+    const QColor bottom = image.pixelColor(image.width() - 5, image.height() - 3);
+    QVERIFY(top.lightness() > 40 && top.lightness() < 110);
+
+    // Each box shows its own colour: a pixel at its projected centre is dominated by that channel.
+    const rl::ViewportScene& scene = m_viewport->scene();
+    for (int i = 1; i <= 3; ++i) {
+        const QPoint p = projectToPixel(m_viewport->camera(), scene.instanceBounds(i).centre());
+        const QColor c = image.pixelColor(p);
+        const int channel[3] = {c.red(), c.green(), c.blue()};
+        const int dominant = i - 1; // red, green, blue
+        for (int k = 0; k < 3; ++k)
+            if (k != dominant)
+                QVERIFY2(
+                    channel[dominant] > channel[k] + 30,
+                    qPrintable(QStringLiteral("box %1 at (%2, %3) is %4").arg(i).arg(p.x()).arg(p.y()).arg(c.name())));
+    }
+    // The floor is an anchor: grey (r, g, b close) even though its colour is magenta.
+    const QPoint floorPixel = projectToPixel(m_viewport->camera(), glm::vec3(3.5f, 0.0f, 3.5f));
+    const QColor floor = image.pixelColor(floorPixel);
+    QVERIFY2(std::abs(floor.red() - floor.green()) < 20 && std::abs(floor.red() - floor.blue()) < 20,
+             qPrintable(floor.name()));
+    QVERIFY(floor != top && floor != bottom);
+    // No orange outline without a selection.
+    QCOMPARE(countPixelsNear(image, QColor(255, 143, 31), 12), 0);
+    QVERIFY(m_viewport->lastFrameMs() > 0.0);
+}
+
+void TestViewport::selectionShowsOrangeOutline() {
+    m_viewport->setScene(makeBoxesScene());
+    showViewport(640, 480);
+    m_viewport->frameAll();
+    const QImage before = grab();
+    m_viewport->setSelection({2});
+    QCOMPARE(m_viewport->selection(), QList<int>{2});
+    const QImage after = grab();
+    after.save(QDir::tempPath() + QStringLiteral("/rl_viewport_selected.png"));
+    const int outline = countPixelsNear(after, QColor(255, 143, 31), 12);
+    qInfo("outline pixels: %d", outline);
+    QCOMPARE(countPixelsNear(before, QColor(255, 143, 31), 12), 0);
+    QVERIFY2(outline > 100, qPrintable(QString::number(outline)));
+    // The outline hugs the selected box: its pixels lie near the box's projected centre, not around the others.
+    const QPoint centre = projectToPixel(m_viewport->camera(), m_viewport->scene().instanceBounds(2).centre());
+    const QPoint other = projectToPixel(m_viewport->camera(), m_viewport->scene().instanceBounds(1).centre());
+    const int radius = (centre - other).manhattanLength() / 3;
+    QRect nearSelected(centre - QPoint(radius, radius), centre + QPoint(radius, radius));
+    QCOMPARE(countPixelsNear(after.copy(nearSelected), QColor(255, 143, 31), 12), outline);
+    // Deselecting removes it again.
+    m_viewport->setSelection({});
+    QCOMPARE(countPixelsNear(grab(), QColor(255, 143, 31), 12), 0);
+}
+
+void TestViewport::clickSelectsTheBoxUnderTheCursor() {
+    m_viewport->setScene(makeBoxesScene());
+    m_viewport->setPickFunction([this](const rl::Ray& ray) { return pickByBoxes(m_viewport->scene(), ray); });
+    showViewport(640, 480);
+    m_viewport->frameAll();
+    QSignalSpy spy(m_viewport.get(), &rl::Viewport::selectionChanged);
+
+    const QPoint blueBox = projectToPixel(m_viewport->camera(), m_viewport->scene().instanceBounds(3).centre());
+    QTest::mouseClick(m_viewport.get(), Qt::LeftButton, Qt::NoModifier, blueBox);
+    QCOMPARE(spy.count(), 1);
+    QCOMPARE(spy.at(0).at(0).value<QList<int>>(), QList<int>{3});
+    QCOMPARE(spy.at(0).at(1).toBool(), false);
+
+    const QPoint redBox = projectToPixel(m_viewport->camera(), m_viewport->scene().instanceBounds(1).centre());
+    QTest::mouseClick(m_viewport.get(), Qt::LeftButton, Qt::ControlModifier, redBox);
+    QCOMPARE(spy.count(), 2);
+    QCOMPARE(spy.at(1).at(0).value<QList<int>>(), QList<int>{1});
+    QCOMPARE(spy.at(1).at(1).toBool(), true);
+
+    QTest::mouseClick(m_viewport.get(), Qt::LeftButton, Qt::ShiftModifier, redBox);
+    QCOMPARE(spy.at(2).at(1).toBool(), true);
+
+    // The top row is sky: a plain click there clears, an extending click does nothing.
+    QTest::mouseClick(m_viewport.get(), Qt::LeftButton, Qt::ShiftModifier, QPoint(320, 2));
+    QCOMPARE(spy.count(), 3);
+    QTest::mouseClick(m_viewport.get(), Qt::LeftButton, Qt::NoModifier, QPoint(320, 2));
+    QCOMPARE(spy.count(), 4);
+    QVERIFY(spy.at(3).at(0).value<QList<int>>().isEmpty());
+    QCOMPARE(spy.at(3).at(1).toBool(), false);
+}
+
+void TestViewport::boxSelectTakesInstancesWhoseCentreIsInside() {
+    m_viewport->setScene(makeBoxesScene());
+    showViewport(640, 480);
+    m_viewport->frameAll();
+    QSignalSpy spy(m_viewport.get(), &rl::Viewport::selectionChanged);
+    const rl::Camera& camera = m_viewport->camera();
+    const QPoint green = projectToPixel(camera, m_viewport->scene().instanceBounds(2).centre());
+    const QPoint blue = projectToPixel(camera, m_viewport->scene().instanceBounds(3).centre());
+    // A rectangle around the green and blue boxes' centres only.
+    const QPoint from(green.x() - 15, std::min(green.y(), blue.y()) - 15);
+    const QPoint to(blue.x() + 15, std::max(green.y(), blue.y()) + 15);
+    QTest::mousePress(m_viewport.get(), Qt::LeftButton, Qt::ShiftModifier, from);
+    QTest::mouseMove(m_viewport.get(), (from + to) / 2);
+    QTest::mouseMove(m_viewport.get(), to);
+    const QImage during = grab();
+    during.save(QDir::tempPath() + QStringLiteral("/rl_viewport_boxselect.png"));
+    QTest::mouseRelease(m_viewport.get(), Qt::LeftButton, Qt::ShiftModifier, to);
+    QCOMPARE(spy.count(), 1);
+    QList<int> selected = spy.at(0).at(0).value<QList<int>>();
+    std::sort(selected.begin(), selected.end());
+    QCOMPARE(selected, (QList<int>{2, 3}));
+    QCOMPARE(spy.at(0).at(1).toBool(), true);
+}
+
+void TestViewport::mouseAndKeysMoveTheCamera() {
+    m_viewport->setScene(makeBoxesScene());
+    showViewport(640, 480);
+    m_viewport->frameAll();
+    rl::Camera& camera = m_viewport->camera();
+    const float yaw = camera.yaw();
+    const glm::vec3 target = camera.target();
+
+    // Middle drag orbits.
+    QTest::mousePress(m_viewport.get(), Qt::MiddleButton, Qt::NoModifier, QPoint(300, 200));
+    QTest::mouseMove(m_viewport.get(), QPoint(360, 220));
+    QTest::mouseRelease(m_viewport.get(), Qt::MiddleButton, Qt::NoModifier, QPoint(360, 220));
+    QVERIFY(std::abs(camera.yaw() - yaw) > 0.1f);
+    QCOMPARE(camera.target(), target);
+
+    // Shift + middle drag pans.
+    QTest::mousePress(m_viewport.get(), Qt::MiddleButton, Qt::ShiftModifier, QPoint(300, 200));
+    QTest::mouseMove(m_viewport.get(), QPoint(340, 200));
+    QTest::mouseRelease(m_viewport.get(), Qt::MiddleButton, Qt::ShiftModifier, QPoint(340, 200));
+    QVERIFY(glm::length(camera.target() - target) > 0.01f);
+
+    // Alt + left drag orbits too, and emits no selection.
+    QSignalSpy selections(m_viewport.get(), &rl::Viewport::selectionChanged);
+    const float yaw2 = camera.yaw();
+    QTest::mousePress(m_viewport.get(), Qt::LeftButton, Qt::AltModifier, QPoint(300, 200));
+    QTest::mouseMove(m_viewport.get(), QPoint(250, 200));
+    QTest::mouseRelease(m_viewport.get(), Qt::LeftButton, Qt::AltModifier, QPoint(250, 200));
+    QVERIFY(std::abs(camera.yaw() - yaw2) > 0.1f);
+    QCOMPARE(selections.count(), 0);
+
+    // The wheel zooms in.
+    const float distance = camera.distance();
+    QWheelEvent wheel(QPointF(320, 240), m_viewport->mapToGlobal(QPointF(320, 240)), QPoint(), QPoint(0, 120),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(m_viewport.get(), &wheel);
+    QVERIFY(camera.distance() < distance);
+
+    // Home frames everything, F frames the selection.
+    QTest::keyClick(m_viewport.get(), Qt::Key_Home);
+    const glm::vec3 allCentre = m_viewport->scene().bounds().centre();
+    QVERIFY(glm::length(camera.target() - allCentre) < 1e-4f);
+    const float allDistance = camera.distance();
+    m_viewport->setSelection({1});
+    QTest::keyClick(m_viewport.get(), Qt::Key_F);
+    QVERIFY(glm::length(camera.target() - m_viewport->scene().instanceBounds(1).centre()) < 1e-4f);
+    QVERIFY(camera.distance() < allDistance);
+    QTest::keyClick(m_viewport.get(), Qt::Key_Home);
+    QTest::keyClick(m_viewport.get(), Qt::Key_Period, Qt::KeypadModifier);
+    QVERIFY(glm::length(camera.target() - m_viewport->scene().instanceBounds(1).centre()) < 1e-4f);
+}
+
+void TestViewport::setTransformsMovesBodies() {
+    m_viewport->setScene(makeBoxesScene());
+    showViewport(640, 480);
+    m_viewport->frameAll();
+    const QPoint red = projectToPixel(m_viewport->camera(), m_viewport->scene().instanceBounds(1).centre());
+    QVERIFY(grab().pixelColor(red).red() > 100);
+    // Lift the red box 20 m: its old place shows no red any more.
+    std::vector<glm::mat4> models;
+    for (const rl::ViewportInstance& inst : m_viewport->scene().instances)
+        models.push_back(inst.model);
+    models[1] = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 20.0f, 0.0f)) * models[1];
+    m_viewport->setTransforms(models);
+    const QColor now = grab().pixelColor(red);
+    QVERIFY2(now.red() < now.green() + 30, qPrintable(now.name()));
+    QCOMPARE(m_viewport->scene().instances[1].model, models[1]);
+}
+
+void TestViewport::fiveThousandInstances() {
+    // 5,000 boxes of three sizes on a floor: four meshes, so the bodies take four instanced draw calls.
+    rl::ViewportScene scene;
+    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(40.0f, 0.5f, 40.0f)));
+    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(0.3f)));
+    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(0.4f, 0.2f, 0.25f)));
+    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(0.15f, 0.5f, 0.15f)));
+    rl::ViewportInstance floor;
+    floor.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -0.5f, 0.0f));
+    floor.flags = rl::kInstanceAnchor;
+    scene.instances.push_back(floor);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const int kBodies = 5000;
+    for (int i = 0; i < kBodies - 1; ++i) {
+        rl::ViewportInstance box;
+        box.meshIndex = 1 + i % 3;
+        const int column = i % 50;
+        const int row = (i / 50) % 50;
+        const int layer = i / 2500;
+        box.model = rl::instanceTransform(
+            glm::dvec3(1.2 * (column - 24.5), 0.6 + 1.1 * layer, 1.2 * (row - 24.5)),
+            glm::normalize(glm::dquat(1.0, unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5)));
+        box.colour = glm::vec3(0.25f + 0.7f * unit(random), 0.25f + 0.7f * unit(random), 0.25f + 0.7f * unit(random));
+        if (i % 97 == 0)
+            box.flags |= rl::kInstanceSleeping;
+        scene.instances.push_back(box);
+    }
+    QCOMPARE(static_cast<int>(scene.instances.size()), kBodies);
+    m_viewport->setScene(std::move(scene));
+    m_viewport->setSelection({10, 11, 12, 500, 2600});
+    showViewport(1280, 800);
+    m_viewport->camera().setYaw(glm::radians(35.0f));
+    m_viewport->camera().setPitch(glm::radians(30.0f));
+    m_viewport->frameAll();
+    m_viewport->camera().zoom(0.75f);
+
+    const QImage image = grab();
+    image.save(QDir::tempPath() + QStringLiteral("/rl_viewport_5000.png"));
+    // background + 4 meshes + grid + 2 x 4 outline passes (there is a selection)
+    QCOMPARE(m_viewport->drawCallsLastFrame(), 1 + 4 + 1 + 8);
+    QVERIFY(countPixelsNear(image, QColor(255, 143, 31), 12) > 20);
+    // Most of the middle of the image is covered by bodies, not background.
+    int distinct = 0;
+    QSet<QRgb> colours;
+    for (int y = 200; y < 600; y += 7)
+        for (int x = 300; x < 980; x += 7)
+            colours.insert(image.pixel(x, y));
+    distinct = colours.size();
+    QVERIFY2(distinct > 200, qPrintable(QString::number(distinct)));
+
+    // Frame time: repaint as fast as the widget can; paintGL's own time (glFinish included) and the wall time per
+    // frame, which adds Qt's composition of the widget into the window.
+    auto measure = [this](int frames, const std::function<void(int)>& beforeFrame) {
+        std::vector<double> paint;
+        QSignalSpy swapped(m_viewport.get(), &QOpenGLWidget::frameSwapped);
+        QElapsedTimer wall;
+        wall.start();
+        for (int f = 0; f < frames; ++f) {
+            beforeFrame(f);
+            m_viewport->update();
+            if (!swapped.wait(5000))
+                break;
+            paint.push_back(m_viewport->lastFrameMs());
+        }
+        const double wallMs = static_cast<double>(wall.nsecsElapsed()) * 1e-6 / std::max<size_t>(paint.size(), 1);
+        return std::make_pair(median(paint), wallMs);
+    };
+    const int kFrames = 30;
+    const auto still = measure(kFrames, [this](int) { m_viewport->camera().orbit(4.0f, 0.0f); });
+    std::vector<glm::mat4> models;
+    for (const rl::ViewportInstance& inst : m_viewport->scene().instances)
+        models.push_back(inst.model);
+    const auto playing = measure(kFrames, [&](int f) {
+        for (size_t i = 1; i < models.size(); ++i)
+            models[i][3].y += 0.01f * static_cast<float>((f % 2) ? -1 : 1);
+        m_viewport->setTransforms(models);
+    });
+    qInfo("5000 instances at %dx%d: orbiting: paintGL median %.1f ms, wall %.1f ms/frame; playback (setTransforms "
+          "every frame): paintGL median %.1f ms, wall %.1f ms/frame",
+          m_viewport->width(), m_viewport->height(), still.first, still.second, playing.first, playing.second);
+    QVERIFY(still.first > 0.0 && playing.first > 0.0);
+}
+
+QTEST_MAIN(TestViewport)
+#include "tst_viewport.moc"

@@ -1,0 +1,325 @@
+#include "viewport/Viewport.h"
+
+#include "viewport/Overlays.h"
+
+#include <QElapsedTimer>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QPainter>
+#include <QSurfaceFormat>
+#include <QWheelEvent>
+
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+
+namespace rl {
+
+namespace {
+// A press that moves less than this is a click; more on the left button starts a box selection.
+constexpr int kClickSlopPixels = 4;
+// One wheel notch (120 eighths of a degree) brings the camera 15% closer, like Blender's default.
+constexpr float kZoomPerNotch = 0.85f;
+constexpr float kZoomPerDragPixel = 1.005f;
+} // namespace
+
+Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
+    // The outline needs a stencil buffer and the shaders need 3.3 core; keep what the application asked for
+    // otherwise (it should set the same as the default format before creating QApplication).
+    QSurfaceFormat format = QSurfaceFormat::defaultFormat();
+    format.setDepthBufferSize(std::max(format.depthBufferSize(), 24));
+    format.setStencilBufferSize(std::max(format.stencilBufferSize(), 8));
+    if (format.version() < qMakePair(3, 3)) {
+        format.setVersion(3, 3);
+        format.setProfile(QSurfaceFormat::CoreProfile);
+    }
+    setFormat(format);
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(false);
+    m_camera.setViewportSize(width(), height());
+}
+
+Viewport::~Viewport() {
+    cleanup();
+}
+
+void Viewport::cleanup() {
+    // Called on aboutToBeDestroyed and from the destructor: GL objects die with the context current.
+    if (!m_renderer.isInitialized())
+        return;
+    makeCurrent();
+    m_renderer.release();
+    doneCurrent();
+}
+
+void Viewport::initializeGL() {
+    // The context is created again when the widget is re-parented (docking): let go of the old one first.
+    if (m_renderer.isInitialized())
+        m_renderer.release();
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::cleanup, Qt::UniqueConnection);
+    m_renderer.initialize();
+    // The renderer keeps CPU copies; hand it the scene again so that a re-created context gets everything.
+    m_renderer.setScene(m_scene);
+}
+
+void Viewport::resizeGL(int w, int h) {
+    // Camera works in logical pixels, as mouse events do; only the aspect matters to the projection.
+    m_camera.setViewportSize(width(), height());
+}
+
+void Viewport::paintGL() {
+    QElapsedTimer timer;
+    timer.start();
+    const qreal ratio = devicePixelRatioF();
+    m_camera.setViewportSize(width(), height());
+    m_renderer.render(m_camera, static_cast<int>(std::lround(width() * ratio)),
+                      static_cast<int>(std::lround(height() * ratio)), m_options);
+
+    const bool boxing = m_drag == Drag::BoxSelect;
+    if (m_axisGizmo || boxing) {
+        QPainter painter(this);
+        if (m_axisGizmo)
+            paintAxisGizmo(painter, m_camera, QPointF(52.0, height() - 52.0), 30.0f);
+        if (boxing)
+            paintSelectionRectangle(painter, QRect(m_pressPosition, m_lastPosition));
+    }
+    if (m_measureFrameTime)
+        context()->functions()->glFinish();
+
+    m_lastFrameMs = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
+    m_averageFrameMs = m_averageFrameMs == 0.0 ? m_lastFrameMs : 0.95 * m_averageFrameMs + 0.05 * m_lastFrameMs;
+    emit frameRendered(m_lastFrameMs);
+}
+
+void Viewport::setScene(ViewportScene scene) {
+    m_scene = std::move(scene);
+    m_renderer.setScene(m_scene);
+    update();
+}
+
+void Viewport::setTransforms(std::span<const glm::mat4> models) {
+    const size_t count = std::min(models.size(), m_scene.instances.size());
+    for (size_t i = 0; i < count; ++i)
+        m_scene.instances[i].model = models[i];
+    m_renderer.setTransforms(models.first(count));
+    update();
+}
+
+void Viewport::setSelection(const QList<int>& instances) {
+    for (ViewportInstance& inst : m_scene.instances)
+        inst.flags &= ~kInstanceSelected;
+    for (int i : instances)
+        if (i >= 0 && i < static_cast<int>(m_scene.instances.size()))
+            m_scene.instances[i].flags |= kInstanceSelected;
+    m_renderer.setInstanceAttributes(m_scene);
+    update();
+}
+
+QList<int> Viewport::selection() const {
+    QList<int> selected;
+    for (int i = 0; i < static_cast<int>(m_scene.instances.size()); ++i)
+        if (m_scene.instances[i].flags & kInstanceSelected)
+            selected.append(i);
+    return selected;
+}
+
+void Viewport::setInstanceAppearance(int instance, const glm::vec3& colour, uint32_t flags) {
+    if (instance < 0 || instance >= static_cast<int>(m_scene.instances.size()))
+        return;
+    m_scene.instances[instance].colour = colour;
+    m_scene.instances[instance].flags = flags;
+    m_renderer.setInstanceAttributes(m_scene);
+    update();
+}
+
+void Viewport::frameAll() {
+    Bounds all = m_scene.bounds();
+    if (all.isEmpty()) {
+        all.extend(glm::vec3(-5.0f, 0.0f, -5.0f)); // an empty scene shows a patch of the grid
+        all.extend(glm::vec3(5.0f, 0.0f, 5.0f));
+    }
+    m_camera.frame(all);
+    cameraMoved();
+}
+
+void Viewport::frameSelection() {
+    const Bounds selected = m_scene.bounds(true);
+    if (selected.isEmpty()) {
+        frameAll();
+        return;
+    }
+    m_camera.frame(selected);
+    cameraMoved();
+}
+
+void Viewport::setRenderOptions(const RenderOptions& options) {
+    m_options = options;
+    update();
+}
+
+void Viewport::setGridVisible(bool visible) {
+    m_options.grid = visible;
+    update();
+}
+
+void Viewport::setAxisGizmoVisible(bool visible) {
+    m_axisGizmo = visible;
+    update();
+}
+
+void Viewport::cameraMoved() {
+    emit cameraChanged();
+    update();
+}
+
+void Viewport::mousePressEvent(QMouseEvent* event) {
+    const QPoint position = event->position().toPoint();
+    m_pressPosition = position;
+    m_lastPosition = position;
+    const Qt::KeyboardModifiers mods = event->modifiers();
+    if (event->button() == Qt::MiddleButton) {
+        m_drag = (mods & Qt::ShiftModifier) ? Drag::Pan : (mods & Qt::ControlModifier) ? Drag::Zoom : Drag::Orbit;
+    } else if (event->button() == Qt::LeftButton && (mods & Qt::AltModifier)) {
+        // Alt+left emulates the middle button for mice and touchpads without one.
+        m_drag = (mods & Qt::ShiftModifier) ? Drag::Pan : (mods & Qt::ControlModifier) ? Drag::Zoom : Drag::Orbit;
+    } else if (event->button() == Qt::LeftButton) {
+        m_drag = Drag::PendingClick;
+        m_extendSelection = (mods & (Qt::ControlModifier | Qt::ShiftModifier)) != 0;
+    } else {
+        QOpenGLWidget::mousePressEvent(event);
+        return;
+    }
+    event->accept();
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent* event) {
+    const QPoint position = event->position().toPoint();
+    const QPoint delta = position - m_lastPosition;
+    switch (m_drag) {
+    case Drag::Orbit:
+        m_camera.orbit(static_cast<float>(delta.x()), static_cast<float>(delta.y()));
+        cameraMoved();
+        break;
+    case Drag::Pan:
+        m_camera.pan(static_cast<float>(delta.x()), static_cast<float>(delta.y()));
+        cameraMoved();
+        break;
+    case Drag::Zoom:
+        m_camera.zoom(std::pow(kZoomPerDragPixel, static_cast<float>(delta.y())));
+        cameraMoved();
+        break;
+    case Drag::PendingClick:
+        if ((position - m_pressPosition).manhattanLength() > kClickSlopPixels) {
+            m_drag = Drag::BoxSelect;
+            update();
+        }
+        break;
+    case Drag::BoxSelect:
+        update();
+        break;
+    case Drag::None:
+        QOpenGLWidget::mouseMoveEvent(event);
+        return;
+    }
+    m_lastPosition = position;
+    event->accept();
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent* event) {
+    const QPoint position = event->position().toPoint();
+    const Drag drag = m_drag;
+    m_drag = Drag::None;
+    if (drag == Drag::PendingClick) {
+        clickSelect(position, m_extendSelection);
+    } else if (drag == Drag::BoxSelect) {
+        m_lastPosition = position;
+        boxSelect(QRect(m_pressPosition, position).normalized(), m_extendSelection);
+        update(); // removes the rectangle
+    } else if (drag == Drag::None) {
+        QOpenGLWidget::mouseReleaseEvent(event);
+        return;
+    }
+    event->accept();
+}
+
+void Viewport::wheelEvent(QWheelEvent* event) {
+    const float notches = static_cast<float>(event->angleDelta().y()) / 120.0f;
+    if (notches == 0.0f) {
+        event->ignore();
+        return;
+    }
+    m_camera.zoom(std::pow(kZoomPerNotch, notches));
+    cameraMoved();
+    event->accept();
+}
+
+void Viewport::keyPressEvent(QKeyEvent* event) {
+    const bool keypad = event->modifiers() & Qt::KeypadModifier;
+    switch (event->key()) {
+    case Qt::Key_F:
+    case Qt::Key_Period:
+        frameSelection();
+        break;
+    case Qt::Key_Home:
+        frameAll();
+        break;
+    case Qt::Key_1: // Blender's numpad views: 1 front, 3 right, 7 top (Ctrl for the opposite side)
+    case Qt::Key_3:
+    case Qt::Key_7: {
+        if (!keypad) {
+            QOpenGLWidget::keyPressEvent(event);
+            return;
+        }
+        const bool opposite = event->modifiers() & Qt::ControlModifier;
+        const float half = glm::half_pi<float>();
+        if (event->key() == Qt::Key_1) {
+            m_camera.setYaw(opposite ? glm::pi<float>() : 0.0f);
+            m_camera.setPitch(0.0f);
+        } else if (event->key() == Qt::Key_3) {
+            m_camera.setYaw(opposite ? -half : half);
+            m_camera.setPitch(0.0f);
+        } else {
+            m_camera.setYaw(0.0f);
+            m_camera.setPitch(opposite ? -half : half); // clamped just short of the pole
+        }
+        cameraMoved();
+        break;
+    }
+    default:
+        QOpenGLWidget::keyPressEvent(event);
+        return;
+    }
+    event->accept();
+}
+
+void Viewport::clickSelect(const QPoint& position, bool extend) {
+    const Ray ray = m_camera.unproject(static_cast<float>(position.x()), static_cast<float>(position.y()));
+    const int hit = m_pick ? m_pick(ray) : m_scene.pickBounds(ray);
+    if (hit >= 0)
+        emit selectionChanged({hit}, extend);
+    else if (!extend)
+        emit selectionChanged({}, false);
+}
+
+void Viewport::boxSelect(const QRect& rectangle, bool extend) {
+    // An instance is inside when its centre projects into the rectangle and lies within the clip range.
+    QList<int> inside;
+    for (int i = 0; i < static_cast<int>(m_scene.instances.size()); ++i) {
+        if (m_scene.instances[i].flags & kInstanceHidden)
+            continue;
+        const Bounds b = m_scene.instanceBounds(i);
+        if (b.isEmpty())
+            continue;
+        const glm::vec3 p = m_camera.project(b.centre());
+        if (p.z < -1.0f || p.z > 1.0f)
+            continue;
+        if (rectangle.contains(QPoint(static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y)))))
+            inside.append(i);
+    }
+    if (!inside.isEmpty() || !extend)
+        emit selectionChanged(inside, extend);
+}
+
+} // namespace rl

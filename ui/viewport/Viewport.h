@@ -1,0 +1,107 @@
+// The editor's 3D viewport widget: draws a ViewportScene with the instanced Renderer and drives an orbit Camera
+// with Blender's mouse and keys. It reports picks and box selections; the owner decides what is selected.
+#pragma once
+
+#include "viewport/Camera.h"
+#include "viewport/Renderer.h"
+#include "viewport/ViewportScene.h"
+
+#include <QList>
+#include <QOpenGLWidget>
+#include <QPoint>
+#include <QRect>
+
+#include <functional>
+#include <span>
+
+namespace rl {
+
+class Viewport : public QOpenGLWidget {
+    Q_OBJECT
+public:
+    // Maps a world ray to the instance it hits first, or -1. The owner wires it to the core's ray cast.
+    using PickFunction = std::function<int(const Ray&)>;
+
+    explicit Viewport(QWidget* parent = nullptr);
+    ~Viewport() override;
+
+    // The whole scene changed (bodies added, removed, re-meshed).
+    void setScene(ViewportScene scene);
+    const ViewportScene& scene() const { return m_scene; }
+    // Playback: one model matrix per instance, in instance order. Cheap: only the instance buffer is re-uploaded.
+    void setTransforms(std::span<const glm::mat4> models);
+    // Sets the selected flag on exactly these instances (the owner's selection, after selectionChanged).
+    void setSelection(const QList<int>& instances);
+    QList<int> selection() const;
+    // Replaces one instance's colour and flags (sleeping, hidden, anchor) without touching the meshes.
+    void setInstanceAppearance(int instance, const glm::vec3& colour, uint32_t flags);
+
+    // Without a pick function, clicks pick by the instances' world boxes (ViewportScene::pickBounds).
+    void setPickFunction(PickFunction pick) { m_pick = std::move(pick); }
+
+    Camera& camera() { return m_camera; }
+    const Camera& camera() const { return m_camera; }
+    void frameAll();       // Home
+    void frameSelection(); // F or numpad '.'; everything when nothing is selected
+
+    const RenderOptions& renderOptions() const { return m_options; }
+    void setRenderOptions(const RenderOptions& options);
+    void setGridVisible(bool visible);
+    void setAxisGizmoVisible(bool visible);
+
+    // Frame time: wall time of paintGL (scene, outline, grid, overlays). With measurement on, paintGL ends with
+    // glFinish so that the figure includes the rasterisation, which llvmpipe otherwise finishes later.
+    void setFrameTimeMeasurement(bool on) { m_measureFrameTime = on; }
+    bool frameTimeMeasurement() const { return m_measureFrameTime; }
+    double lastFrameMs() const { return m_lastFrameMs; }
+    double averageFrameMs() const { return m_averageFrameMs; } // exponential average over about 20 frames
+    int drawCallsLastFrame() const { return m_renderer.drawCallsLastFrame(); }
+    bool isRendererReady() const { return m_renderer.isInitialized(); }
+
+    QSize minimumSizeHint() const override { return {160, 120}; }
+    QSize sizeHint() const override { return {800, 600}; }
+
+signals:
+    // A click (one instance or none) or a box selection (many). extend: Ctrl or Shift was held, so the owner adds
+    // to (or toggles in) its selection instead of replacing it. A plain click on nothing clears: ({}, false).
+    void selectionChanged(const QList<int>& instances, bool extend);
+    void frameRendered(double milliseconds);
+    void cameraChanged();
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int w, int h) override;
+    void paintGL() override;
+
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    enum class Drag { None, Orbit, Pan, Zoom, PendingClick, BoxSelect };
+
+    void cleanup();
+    void clickSelect(const QPoint& position, bool extend);
+    void boxSelect(const QRect& rectangle, bool extend);
+    void cameraMoved();
+
+    ViewportScene m_scene;
+    Renderer m_renderer;
+    Camera m_camera;
+    RenderOptions m_options;
+    PickFunction m_pick;
+    bool m_axisGizmo = true;
+
+    Drag m_drag = Drag::None;
+    QPoint m_pressPosition;
+    QPoint m_lastPosition;
+    bool m_extendSelection = false;
+
+    bool m_measureFrameTime = true;
+    double m_lastFrameMs = 0.0;
+    double m_averageFrameMs = 0.0;
+};
+
+} // namespace rl

@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
-#include <fstream>
 #include <streambuf>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -201,27 +200,6 @@ Status writeFileAtomically(const std::string& path, std::string_view contents) {
         out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
         return Ok{};
     });
-}
-
-Result<std::string> readWholeFile(const std::string& path, size_t maxBytes) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        return fileError(path, "cannot open: " + errnoText(errno));
-    struct stat info {};
-    if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
-        return fileError(path, "is a directory, not a file");
-    std::string text;
-    char buffer[1 << 16];
-    while (in) {
-        in.read(buffer, sizeof(buffer));
-        const size_t n = static_cast<size_t>(in.gcount());
-        if (text.size() + n > maxBytes)
-            return fileError(path, "file is larger than " + std::to_string(maxBytes) + " bytes");
-        text.append(buffer, n);
-    }
-    if (in.bad())
-        return fileError(path, "cannot read: " + errnoText(errno));
-    return text;
 }
 
 } // namespace rl

@@ -42,7 +42,4 @@ private:
 Status writeFileAtomically(const std::string& path, const std::function<Status(std::ostream&)>& writer);
 Status writeFileAtomically(const std::string& path, std::string_view contents);
 
-// Reads a whole file; errors name the file. Files above maxBytes are refused rather than exhausting memory.
-Result<std::string> readWholeFile(const std::string& path, size_t maxBytes = size_t(1) << 32);
-
 } // namespace rl

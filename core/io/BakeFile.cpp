@@ -2,6 +2,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/NumberFormat.h"
+#include "io/ObjReader.h"
 #include "scene/BodyDef.h"
 
 #include <algorithm>
@@ -406,7 +407,7 @@ Result<Bake> readBake(std::string_view text, const std::string& fileName, BakeFi
 }
 
 Result<Bake> readBakeFile(const std::string& path, BakeFileInfo* info) {
-    Result<std::string> text = readWholeFile(path);
+    Result<std::string> text = readFileBytes(path);
     if (!text)
         return text.error();
     return readBake(*text, path, info);

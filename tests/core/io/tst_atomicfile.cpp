@@ -128,20 +128,6 @@ private slots:
         }
         QCOMPARE(expected, kLines);
     }
-
-    void readWholeFileErrors() {
-        QTemporaryDir dir;
-        const std::string missing = dir.filePath("missing.txt").toStdString();
-        Result<std::string> r = readWholeFile(missing);
-        QVERIFY(!r.ok());
-        QCOMPARE(r.error().file, missing);
-
-        const std::string path = dir.filePath("some.txt").toStdString();
-        QVERIFY(writeFileAtomically(path, std::string_view("0123456789")).ok());
-        QCOMPARE(readWholeFile(path).value(), std::string("0123456789"));
-        QVERIFY(!readWholeFile(path, 5).ok());
-        QVERIFY(!readWholeFile(dir.path().toStdString()).ok());
-    }
 };
 
 QTEST_APPLESS_MAIN(TestAtomicFile)

@@ -70,6 +70,9 @@ def export_all():
                               export_yup=True, export_apply=True)
     bpy.ops.export_scene.fbx(filepath=os.path.join(OUT, "scene.fbx"), use_selection=False, object_types={"MESH"},
                              axis_forward="-Z", axis_up="Y", apply_unit_scale=True, mesh_smooth_type="OFF")
+    # The same scene declared Z-up and in metres (no unit scale applied): the importer must convert it back.
+    bpy.ops.export_scene.fbx(filepath=os.path.join(OUT, "scene_zup.fbx"), use_selection=False, object_types={"MESH"},
+                             axis_forward="Y", axis_up="Z", apply_unit_scale=False, mesh_smooth_type="OFF")
     # PLY and STL hold one unnamed mesh per file, so each object gets its own file named after it.
     for obj in list(bpy.context.scene.objects):
         select_only(obj)

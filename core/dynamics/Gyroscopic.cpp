@@ -23,6 +23,21 @@ Quat halfRate(const Quat& q, const Vec3& bodyOmega) {
     return 0.5 * (q * Quat(0.0, bodyOmega.x, bodyOmega.y, bodyOmega.z));
 }
 
+// One Newton iteration on f(w) = I (w - w0) + h w x (I w) = 0 from the current guess w; returns |update|.
+// J = I + h (skew(w) I - skew(I w)) is I plus a term of order h |w| I, so it is far from singular for any step the
+// clamp allows; a singular or non-finite J (only from non-finite input) leaves w as it is.
+Real backwardEulerNewtonStep(const Vec3& w0, Vec3& w, const Vec3& inertia, Real h) {
+    const Vec3 momentum = inertia * w;
+    const Vec3 residual = inertia * (w - w0) + h * glm::cross(w, momentum);
+    const Mat3 jacobian = diagonal(inertia) + h * (skew(w) * diagonal(inertia) - skew(momentum));
+    const Real det = glm::determinant(jacobian);
+    if (!std::isfinite(det) || std::abs(det) < 1e-300)
+        return 0.0;
+    const Vec3 update = glm::inverse(jacobian) * residual;
+    w -= update;
+    return glm::length(update);
+}
+
 } // namespace
 
 Vec3 eulerAngularAcceleration(const Vec3& bodyOmega, const Vec3& inertia) {
@@ -34,14 +49,19 @@ Vec3 gyroscopicExplicit(const Vec3& bodyOmega, const Vec3& inertia, Real dt) {
 }
 
 Vec3 gyroscopicImplicit(const Vec3& bodyOmega, const Vec3& inertia, Real dt) {
-    const Vec3 momentum = inertia * bodyOmega;
-    const Vec3 residual = dt * glm::cross(bodyOmega, momentum);
-    const Mat3 jacobian = diagonal(inertia) + dt * (skew(bodyOmega) * diagonal(inertia) - skew(momentum));
-    const Real det = glm::determinant(jacobian);
-    // J is I plus a term of order dt |w| I, so its determinant is near det(I) > 0 for any step the clamp allows.
-    if (!std::isfinite(det) || std::abs(det) < 1e-300)
-        return bodyOmega;
-    return bodyOmega - glm::inverse(jacobian) * residual;
+    Vec3 w = bodyOmega;
+    backwardEulerNewtonStep(bodyOmega, w, inertia, dt);
+    return w;
+}
+
+Vec3 gyroscopicMidpoint(const Vec3& bodyOmega, const Vec3& inertia, Real dt) {
+    Vec3 mid = bodyOmega;
+    for (int k = 0; k < kMidpointMaxIterations; ++k) {
+        const Real change = backwardEulerNewtonStep(bodyOmega, mid, inertia, 0.5 * dt);
+        if (!(change > 1e-14 * glm::length(mid)))
+            break;
+    }
+    return 2.0 * mid - bodyOmega;
 }
 
 void rotationRk4(Quat& orientation, Vec3& bodyOmega, const Vec3& inertia, Real damping, Real dt) {

@@ -16,11 +16,22 @@ Vec3 eulerAngularAcceleration(const Vec3& bodyOmega, const Vec3& inertia);
 Vec3 gyroscopicExplicit(const Vec3& bodyOmega, const Vec3& inertia, Real dt);
 
 // Backward Euler on Euler's equations, f(w) = I (w - w0) + dt w x (I w) = 0, solved by one Newton iteration from w0:
-// w = w0 - J^-1 f(w0) with J = I + dt (skew(w0) I - skew(I w0)). Exact backward Euler dissipates |L| and energy
-// (dot f with I w: |L1|^2 = L1 . L0), which is what makes it stable at any step; one Newton iteration keeps that
-// behaviour while the Newton error (of order dt^3 per step) stays below the method's own first-order error.
-// Returns w0 when J is singular, which only happens for non-finite input.
+// w = w0 - J^-1 f(w0) with J = I + dt (skew(w0) I - skew(I w0)), as Catto presented it in 2015. Exact backward Euler
+// dissipates |L| and energy (dot f with I w: |L1|^2 = L1 . L0), which is what makes it stable at any step. The loss is
+// of order (dt |w x L| / |L|)^2 per step, which is large for a tumbling body: measured on tst_rotation's T-handle at
+// 6 rad/s and 240 Hz it loses 8 % of |L| and 16 % of its energy in 20 s. So no integrator uses it for a whole step;
+// Verlet uses it for its closing half step, where the explicit opening half cancels its leading error. Returns w0 when
+// J is singular, which only happens for non-finite input.
 Vec3 gyroscopicImplicit(const Vec3& bodyOmega, const Vec3& inertia, Real dt);
+
+// Implicit midpoint on Euler's equations: I (w1 - w0) = -dt wm x (I wm), wm = (w0 + w1) / 2. Solved as backward Euler
+// over dt/2 for wm (the same Newton iteration as above, repeated until the update is below 1e-14 of |w|, at most
+// kMidpointMaxIterations times), then w1 = 2 wm - w0. Implicit midpoint keeps every quadratic invariant, here |L|^2 and
+// the energy, exactly up to the Newton tolerance: dotting the equation with I wm gives |L1| = |L0|, with wm gives
+// E1 = E0. So it is stable at any step like Catto's step, without its dissipation, and second order.
+// Used by symplectic-euler.
+Vec3 gyroscopicMidpoint(const Vec3& bodyOmega, const Vec3& inertia, Real dt);
+inline constexpr int kMidpointMaxIterations = 8; // Newton converges quadratically; 2-3 iterations at clamp-sized steps
 
 // One classical RK4 step of the coupled system q' = q (0, w)/2, w' = eulerAngularAcceleration(w) - damping w, with w in
 // the body frame. Fourth order in both; the quaternion is renormalised at the end (RK4 does not keep |q| = 1).

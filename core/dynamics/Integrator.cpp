@@ -23,7 +23,7 @@ void angularVelocityPhase(BodyState& state, uint32_t i, Real dt, Real c, Integra
         w = q * wb;
         break;
     case Integrator::SymplecticEuler:
-        wb = gyroscopicImplicit(wb, inertia, dt) * detail::implicitDecay(c, dt);
+        wb = gyroscopicMidpoint(wb, inertia, dt) * detail::implicitDecay(c, dt);
         w = q * wb;
         state.smoothRotation[i] = rotationFromVector(w * dt);
         break;
@@ -34,7 +34,7 @@ void angularVelocityPhase(BodyState& state, uint32_t i, Real dt, Real c, Integra
         break;
     case Integrator::Rk4: {
         Quat qEnd = q;
-        if (c * dt > 2.0) {
+        if (detail::isStiff(c, dt)) {
             // Stiff damping (see Integrator.h): RK4 for the torque-free part, exact decay for the damping.
             rotationRk4(qEnd, wb, inertia, 0.0, dt);
             wb *= std::exp(-c * dt);
@@ -86,8 +86,16 @@ void integratePositions(BodyState& state, BodyRange range, Real dt, const Vec3& 
             continue;
         Quat& q = state.orientation[i];
         Vec3& w = state.angularVelocity[i];
-        const Vec3 solverChange = w - state.smoothAngularVelocity[i];
-        q = glm::normalize(rotationFromVector(solverChange * dt) * state.smoothRotation[i] * q);
+        const Quat before = q;
+        if (w == state.smoothAngularVelocity[i])
+            q = glm::normalize(state.smoothRotation[i] * q);
+        else
+            q = glm::normalize(rotationFromVector(w * dt) * q); // changed by the solver or the clamp: turn with it
+        if (integrator == Integrator::ExplicitEuler) {
+            // Explicit Euler's state is (q, w in the body frame): the new w keeps its body-frame components while the
+            // body turns by the old w. (For the other schemes q turns about w itself, which leaves w as it is.)
+            w = q * (glm::conjugate(before) * w);
+        }
         if (integrator == Integrator::Verlet) {
             const Real ca = damping.angular + state.angularDamping[i];
             const Vec3 wb = glm::conjugate(q) * w;

@@ -13,19 +13,25 @@ namespace rl {
 
 // How the integrators meet the velocity solver. The world's substep is
 //     integrateVelocities -> warm start, solve contacts -> integratePositions -> relax
-// and every integrator is written as "what the smooth forces do over the substep" (velocity phase, which also records
-// that smooth motion in BodyState's scratch arrays) plus "what the solver changed" (position phase). Where the solver
-// changed nothing, each integrator is exactly its textbook self; where it did, the contact impulse is an impulse at the
-// start of the substep: it moves the position by (its velocity change) * dt. So with contacts every scheme is first
-// order in position; the integrators differ in free flight, in rotation and in damping.
+// The velocity phase applies the smooth forces and records, per body, the velocity and the displacement they alone
+// prescribe over the substep (BodyState's scratch arrays). The position phase then looks at what the solver did:
+//  - a body whose velocity the solver left alone moves by its integrator's own displacement and rotation, so free
+//    flight keeps each scheme's textbook accuracy;
+//  - a body whose velocity the solver (or the speed clamp) changed moves with the solved velocity, x += v dt and q by
+//    w dt. That is the assumption the solver's non-penetration and friction rows are built on; adding the smooth part's
+//    own curvature on top (RK4's v dt + a dt^2/2 instead of v dt) would lift a resting body by a dt^2/2 every substep.
+// So wherever a contact acts, every scheme is first order in position, as any velocity-level solver is; the schemes
+// differ in free flight, in rotation and in damping.
 //
-//   explicit-euler    velocity phase: remember x += v_old dt, then v += a dt (damping (1 - c dt), never below 0).
-//                     position phase: x += v_old dt + (solver's change of v) dt. Orientation: q advances by w_old.
-//                     Rotation: explicit Euler on Euler's equations, which gains energy (see Gyroscopic.h).
-//                     The original project's scheme. First order.
+//   explicit-euler    velocity phase: records x += v_old dt, then v += a dt (damping factor 1 - c dt, never below 0).
+//                     Orientation advances by w_old, and w keeps its body-frame components (explicit Euler on
+//                     (q, w_body)). Rotation: explicit Euler on Euler's equations, which gains |L| and energy every
+//                     step (see Gyroscopic.h). The original project's scheme. First order.
 //   symplectic-euler  velocity phase: v = (v + a dt) / (1 + c dt) (implicit damping, stable for any c), gyroscopic
-//                     term implicit. position phase: x += v dt, q advances by the new w. Box2D's scheme. First order;
-//                     symplectic for position-dependent forces, so oscillators keep their energy on average.
+//                     term by implicit midpoint (keeps |L| and energy; Gyroscopic.h says why not Catto's one-step
+//                     backward Euler). position phase: x += v dt, q advances by the new w: the solver's own
+//                     assumption, so for it both branches above are the same. Box2D's scheme for the translation.
+//                     First order; symplectic for position-dependent forces, so oscillators keep their energy.
 //   verlet            velocity Verlet as kick-drift-kick. velocity phase: half kick v += (a - c v) dt/2, gyroscopic
 //                     half step explicit. The solver sees the half-kicked velocity. position phase: drift x += v dt,
 //                     q advances by the mid-step w, then the closing half kick v = (v + a dt/2) / (1 + c dt/2) with
@@ -34,12 +40,13 @@ namespace rl {
 //                     runs after the solver, a body resting on the ground ends the substep with v = g dt/2 into it;
 //                     the next solve (or the world's relax pass) removes it before it can move the body.
 //   rk4               velocity phase: classical RK4 on (x, v) with a(x) - c v, and on (q, w_body) with Euler's
-//                     equations; records the RK4 displacement and rotation. position phase: applies them plus the
-//                     solver's change. Fourth order (exact in position for constant gravity without damping).
+//                     equations; records the RK4 displacement and rotation. Fourth order in free flight (exact in
+//                     position for constant gravity without damping).
 //
-// Stiff damping: when c dt exceeds 2, beyond which explicit updates would overshoot (for RK4 its stability bound is
-// about 2.78), every scheme uses the exact decay for that step instead of amplifying. This keeps bad settings from
-// producing NaN; it is not an accuracy regime anyone should run in.
+// Stiff damping: where c h > 1 for a (half) step h, an explicit update 1 - c h would flip the velocity's sign and, past
+// c h = 2, amplify it (RK4's bound is about 2.78). There every scheme uses the exact solution of v' = a - c v for that
+// (half) step instead, which keeps the terminal velocity a / c right and no bad setting can produce NaN. It is a
+// safety net, not an accuracy regime anyone should run in.
 
 struct BodyRange {
     uint32_t begin = 0;
@@ -78,13 +85,25 @@ void integrateSmooth(BodyState& state, BodyRange range, Real dt, const Vec3& gra
 // phase writes the smooth displacement and velocity, the position phase adds what changed the velocity in between.
 
 namespace detail {
-// Factor for an explicit decay over h: 1 - c h, or the exact exp(-c h) where 1 - c h would overshoot (see above).
-inline Real explicitDecay(Real c, Real h) {
-    return c * h > 2.0 ? std::exp(-c * h) : std::max(0.0, 1.0 - c * h);
+// True where an explicit decay over h would overshoot (see "Stiff damping" above).
+inline bool isStiff(Real c, Real h) {
+    return c * h > 1.0;
 }
-// Factor for an implicit decay over h: 1 / (1 + c h). Stable for any c >= 0.
+// Decay factor of an explicit step over h: 1 - c h, or the exact exp(-c h) where that would overshoot.
+inline Real explicitDecay(Real c, Real h) {
+    return isStiff(c, h) ? std::exp(-c * h) : 1.0 - c * h;
+}
+// Decay factor of an implicit step over h: 1 / (1 + c h). Stable for any c >= 0.
 inline Real implicitDecay(Real c, Real h) {
     return 1.0 / (1.0 + c * h);
+}
+// v' = a - c v over h: explicit Euler, or the exact solution where explicit Euler would overshoot.
+template <class V>
+V explicitKick(const V& v, const V& a, Real c, Real h) {
+    if (!isStiff(c, h))
+        return v * (1.0 - c * h) + a * h;
+    const Real decay = std::exp(-c * h);
+    return a / c + (v - a / c) * decay;
 }
 } // namespace detail
 
@@ -94,18 +113,18 @@ void translationVelocityPhase(Integrator integrator, const V& x, V& v, Real dt, 
     switch (integrator) {
     case Integrator::ExplicitEuler:
         smoothDisplacement = v * dt;
-        v = v * detail::explicitDecay(c, dt) + accel(x) * dt;
+        v = detail::explicitKick(v, accel(x), c, dt);
         break;
     case Integrator::SymplecticEuler:
         v = (v + accel(x) * dt) * detail::implicitDecay(c, dt);
         smoothDisplacement = v * dt;
         break;
     case Integrator::Verlet:
-        v = v * detail::explicitDecay(c, 0.5 * dt) + accel(x) * (0.5 * dt);
+        v = detail::explicitKick(v, accel(x), c, 0.5 * dt);
         smoothDisplacement = v * dt;
         break;
     case Integrator::Rk4: {
-        if (c * dt > 2.0) {
+        if (detail::isStiff(c, dt)) {
             // Stiff damping: exact solution of v' = a - c v with a frozen at x (see the header comment).
             const V a = accel(x);
             const Real decay = std::exp(-c * dt);
@@ -135,7 +154,10 @@ void translationVelocityPhase(Integrator integrator, const V& x, V& v, Real dt, 
 template <class V, class Accel>
 void translationPositionPhase(Integrator integrator, V& x, V& v, Real dt, Real c, const Accel& accel,
                               const V& smoothDisplacement, const V& smoothVelocity) {
-    x = x + smoothDisplacement + (v - smoothVelocity) * dt;
+    if (v == smoothVelocity)
+        x = x + smoothDisplacement;
+    else
+        x = x + v * dt; // the solver or the clamp changed v: move with it (see above)
     if (integrator == Integrator::Verlet)
         v = (v + accel(x) * (0.5 * dt)) * detail::implicitDecay(c, 0.5 * dt);
 }

@@ -1,0 +1,42 @@
+// Separating-axis test between convex polyhedra: face normals of both and edge-pair axes pruned on the Gauss map
+// (Gregorius, GDC 2013). Exact for polyhedra; the manifold builder uses its features, and EPA falls back to it.
+#pragma once
+
+#include "collision/Shape.h"
+
+#include <cstdint>
+#include <limits>
+
+namespace rl {
+
+enum class SatFeature : uint8_t { FaceA, FaceB, EdgePair };
+
+struct SatOptions {
+    // Stop as soon as an axis separates by more than this: the pair is then of no interest.
+    Real earlyOut = std::numeric_limits<Real>::infinity();
+    // Face axes win over edge axes (and A's faces over B's) unless the other is deeper by this much. Preferring
+    // faces keeps the manifold from flickering between one edge point and a face patch on near ties. 0 gives the
+    // exact maximum, which the depth tests use.
+    Real faceBias = 0.0;
+};
+
+struct SatResult {
+    Real separation = -std::numeric_limits<Real>::infinity(); // > 0 separated, < 0 penetration depth (negated)
+    Vec3 normal{0.0, 1.0, 0.0};                               // world, unit, from A to B
+    SatFeature feature = SatFeature::FaceA;
+    uint32_t face = 0;  // FaceA: A's face, FaceB: B's face
+    uint32_t edgeA = 0; // EdgePair
+    uint32_t edgeB = 0;
+    Vec3 pointA{0.0}; // EdgePair: closest points of the two edges, world
+    Vec3 pointB{0.0};
+};
+
+// Both shapes must be polyhedral (boxes or hulls). A flat polygon only offers the face whose normal points to the
+// other shape's centre, so a body on a thin floor is pushed back to the side it is on.
+SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB,
+                       const SatOptions& options = {});
+
+// Closest points of segments p0-p1 and q0-q1 (Ericson 5.1.9), used for edge contacts.
+void closestPointsSegments(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1, Vec3& onP, Vec3& onQ);
+
+} // namespace rl

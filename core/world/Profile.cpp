@@ -1,0 +1,38 @@
+#include "world/Profile.h"
+
+namespace rl {
+
+namespace {
+constexpr std::string_view kStageNames[kStageCount] = {"update_broadphase",
+                                                       "find_pairs",
+                                                       "narrowphase",
+                                                       "build_islands",
+                                                       "integrate_velocities",
+                                                       "warm_start",
+                                                       "solve",
+                                                       "integrate_positions",
+                                                       "relax",
+                                                       "restitution",
+                                                       "ccd",
+                                                       "sleep",
+                                                       "store_frame"};
+constexpr std::string_view kCounterNames[kCounterCount] = {
+    "pairs",        "manifolds",         "contact_points", "normal_rows", "friction_rows", "restitution_rows",
+    "awake_bodies", "integrated_bodies", "ccd_bodies",     "ccd_hits",    "steps"};
+} // namespace
+
+std::string_view stageName(Stage stage) {
+    return kStageNames[static_cast<int>(stage)];
+}
+std::string_view counterName(Counter counter) {
+    return kCounterNames[static_cast<int>(counter)];
+}
+
+double Profile::totalMs() const {
+    double sum = 0.0;
+    for (double ms : milliseconds)
+        sum += ms;
+    return sum;
+}
+
+} // namespace rl

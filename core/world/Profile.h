@@ -1,0 +1,80 @@
+// The step's named stages, their timings, and the counters that say how much work each stage did.
+// The profile makes the cost of each effect visible: a skipped stage shows zero calls.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <string_view>
+
+namespace rl {
+
+// In the order World::step runs them (DESIGN.md §2).
+enum class Stage {
+    UpdateBroadphase,
+    FindPairs,
+    Narrowphase,
+    BuildIslands,
+    IntegrateVelocities,
+    WarmStart,
+    Solve,
+    IntegratePositions,
+    Relax,
+    Restitution,
+    Ccd,
+    Sleep,
+    StoreFrame,
+    Count
+};
+inline constexpr int kStageCount = static_cast<int>(Stage::Count);
+std::string_view stageName(Stage stage); // "update_broadphase", "find_pairs", ...
+
+enum class Counter {
+    Pairs,            // broadphase pairs
+    Manifolds,        // touching manifolds
+    ContactPoints,    // manifold points
+    NormalRows,       // normal rows solved (points x passes)
+    FrictionRows,     // friction rows solved
+    RestitutionRows,  // restitution rows applied
+    AwakeBodies,      // awake dynamic bodies (per step)
+    IntegratedBodies, // bodies moved by the integrator (per substep)
+    CcdBodies,        // bodies swept by CCD
+    CcdHits,          // sweeps that stopped a body
+    Steps,
+    Count
+};
+inline constexpr int kCounterCount = static_cast<int>(Counter::Count);
+std::string_view counterName(Counter counter); // "pairs", "manifolds", ...
+
+struct Profile {
+    std::array<double, kStageCount> milliseconds{};
+    std::array<uint64_t, kStageCount> calls{};
+    std::array<uint64_t, kCounterCount> counters{};
+
+    void add(Stage s, double ms) {
+        milliseconds[static_cast<int>(s)] += ms;
+        ++calls[static_cast<int>(s)];
+    }
+    void count(Counter c, uint64_t n) { counters[static_cast<int>(c)] += n; }
+    uint64_t counter(Counter c) const { return counters[static_cast<int>(c)]; }
+    double ms(Stage s) const { return milliseconds[static_cast<int>(s)]; }
+    double totalMs() const;
+    void reset() { *this = Profile{}; }
+};
+
+// Times one stage into a profile for the lifetime of the object.
+class StageTimer {
+public:
+    StageTimer(Profile& profile, Stage stage) : m_profile(profile), m_stage(stage), m_start(Clock::now()) {}
+    ~StageTimer() { m_profile.add(m_stage, std::chrono::duration<double, std::milli>(Clock::now() - m_start).count()); }
+    StageTimer(const StageTimer&) = delete;
+    StageTimer& operator=(const StageTimer&) = delete;
+
+private:
+    using Clock = std::chrono::steady_clock;
+    Profile& m_profile;
+    Stage m_stage;
+    Clock::time_point m_start;
+};
+
+} // namespace rl

@@ -1,0 +1,164 @@
+// The runtime world: built from a Scene, it owns the body state, shapes, broadphase and contacts, and advances them
+// one frame at a time through the named stages of DESIGN.md §2. It knows nothing of the UI.
+#pragma once
+
+#include "collision/BroadPhase.h"
+#include "collision/Manifold.h"
+#include "collision/Shape.h"
+#include "common/Result.h"
+#include "dynamics/BodyState.h"
+#include "dynamics/ContactSolver.h"
+#include "dynamics/Integrator.h"
+#include "scene/Scene.h"
+#include "world/Effects.h"
+#include "world/Profile.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rl {
+
+// Run-time overrides of the scene's world settings (the CLI's --fps, --substeps, ...).
+struct WorldOptions {
+    std::optional<Real> fps;
+    std::optional<int> substeps;
+    std::optional<int> iterations;
+    std::optional<Integrator> integrator;
+    std::optional<EffectsSetting> effects;
+    int threads = 1; // worker threads for the narrowphase; results are identical for any count
+};
+
+// Tuning constants of the contact pipeline, with where they come from.
+struct WorldTuning {
+    // Contacts are created this far before bodies touch, so that resting contacts never flicker (Box2D: 4 x slop).
+    Real speculativeDistance = 0.02;
+    // Fat-box margin of the broadphase, m.
+    Real aabbMargin = 0.05;
+    // A body is a candidate for sleep below these speeds (Box2D v3's default linear sleep tolerance is 5 cm/s).
+    Real sleepLinearSpeed = 0.05;
+    Real sleepAngularSpeed = 0.05; // rad/s
+    Real timeToSleep = 0.5;        // s an island must stay slow before it sleeps
+    // CCD sweeps a body that moves more than this fraction of its smallest size in one step.
+    Real ccdFraction = 0.5;
+};
+
+// Figures of one frame for the timeline's tracks and the stability tests.
+struct FrameDiagnostics {
+    Real kineticEnergy = 0.0;   // J, dynamic bodies
+    Real potentialEnergy = 0.0; // J, -m g.x summed over dynamic bodies
+    Real maxPenetration = 0.0;  // m, deepest contact point (0 when none)
+    int contactPoints = 0;
+    int awakeBodies = 0;
+};
+
+class World {
+public:
+    static Result<World> create(const Scene& scene, const WorldOptions& options = {});
+
+    // Advances one frame (1/fps) in `substeps` substeps.
+    void step();
+
+    size_t bodyCount() const { return m_names.size(); }
+    const std::string& name(size_t i) const { return m_names[i]; }
+    bool isAnchor(size_t i) const { return m_state.isStatic(static_cast<uint32_t>(i)); }
+    bool isAwake(size_t i) const { return m_state.isAwake(static_cast<uint32_t>(i)); }
+
+    Vec3 centerOfMass(size_t i) const { return m_state.position[i]; }
+    // Orientation of the body's shape coordinates in the world (what the scene's `orientation` means).
+    Quat shapeOrientation(size_t i) const { return m_state.shapeOrientation(static_cast<uint32_t>(i)); }
+    // Rotation since the run began: identity at frame 0.
+    Quat rotationSinceStart(size_t i) const;
+    Vec3 linearVelocity(size_t i) const { return m_state.linearVelocity[i]; }
+    Vec3 angularVelocity(size_t i) const { return m_state.angularVelocity[i]; }
+    // World position of the body's vertex mean (the .bake reference point).
+    Vec3 vertexMean(size_t i) const { return m_state.position[i] + rotationSinceStart(i) * m_vertexMeanOffset[i]; }
+    // From the centre of mass to the vertex mean at frame 0, world axes.
+    Vec3 vertexMeanOffset(size_t i) const { return m_vertexMeanOffset[i]; }
+    Real mass(size_t i) const { return m_state.info[i].mass; }
+
+    // Collision shapes live in the body's shape coordinates (a box stays a box); transform() places them.
+    const Shape& shape(size_t i) const { return m_shapes[i]; }
+    Transform transform(size_t i) const {
+        const uint32_t k = static_cast<uint32_t>(i);
+        return Transform::fromQuat(m_state.shapeOrigin(k), m_state.shapeOrientation(k));
+    }
+
+    int64_t frame() const { return m_frame; }
+    Real time() const { return static_cast<Real>(m_frame) / m_fps; }
+    Real fps() const { return m_fps; }
+    int substeps() const { return m_substeps; }
+    Integrator integrator() const { return m_integrator; }
+    const Vec3& gravity() const { return m_gravity; }
+
+    const ActiveEffects& effects() const { return m_effects.effects; }
+    const EffectsDecision& effectsDecision() const { return m_effects; }
+    const Profile& profile() const { return m_profile; }
+    void resetProfile() { m_profile.reset(); }
+    Profile& mutableProfile() { return m_profile; }
+    const ClampCounters& clampCounters() const { return m_state.clampCounters; }
+
+    FrameDiagnostics diagnostics() const;
+    // The current manifolds (touching or speculative), for overlays and tests.
+    std::vector<Manifold> manifolds() const;
+
+    // Wakes every body (after an edit from outside, for example).
+    void wakeAll();
+
+    const BodyState& state() const { return m_state; }
+
+private:
+    World() = default;
+
+    struct Contact {
+        uint32_t bodyA = 0, bodyB = 0;
+        Manifold manifold;
+        Real friction = 0.0;
+        Real restitution = 0.0;
+    };
+
+    void updateBroadphase();
+    void findPairs();
+    void narrowphase();
+    void buildIslands();
+    void solve();
+    void continuousCollision();
+    void updateSleep();
+    void collidePair(Contact& contact) const;
+    void wakeIsland(uint32_t body);
+
+    Real m_fps = 60.0;
+    int m_substeps = 4;
+    int m_iterations = 1;
+    Integrator m_integrator = Integrator::SymplecticEuler;
+    Vec3 m_gravity{0.0};
+    Damping m_damping;
+    int m_threads = 1;
+    WorldTuning m_tuning;
+    EffectsDecision m_effects;
+    ContactSolverSettings m_solverSettings;
+
+    BodyState m_state;
+    std::vector<std::string> m_names;
+    std::vector<Shape> m_shapes;
+    std::vector<Real> m_friction, m_restitution;
+    std::vector<Vec3> m_vertexMeanOffset;
+    std::vector<Quat> m_initialShapeOrientation;
+    std::vector<ProxyKey> m_proxies;
+    std::vector<Real> m_sleepTime;
+    std::vector<Real> m_minExtent;
+    CombineRule m_frictionRule = CombineRule::GeometricMean;
+    CombineRule m_restitutionRule = CombineRule::Max;
+
+    BroadPhase m_broadPhase;
+    std::vector<Contact> m_contacts; // in broadphase pair order
+    std::vector<uint32_t> m_island;  // island root per body (union-find), recomputed every step
+    ContactSolver m_solver;
+    std::vector<Vec3> m_stepStartPosition;
+    std::vector<Quat> m_stepStartOrientation;
+
+    Profile m_profile;
+    int64_t m_frame = 0;
+};
+
+} // namespace rl

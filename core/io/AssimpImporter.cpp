@@ -237,6 +237,9 @@ Result<ObjFile> importUnchecked(const std::string& path) {
     importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
     // Skeleton-only files must not turn into bodies made of bone stand-in meshes.
     importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
+    // COLLADA ids are sanitised ("Box.001" becomes id "Box_001"); the name attribute is the object's real name,
+    // which the anchor rule needs.
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_USE_COLLADA_NAMES, true);
     const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
     if (!scene) {
         std::string reason = importer.GetErrorString();

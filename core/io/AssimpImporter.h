@@ -22,6 +22,7 @@ namespace rl {
 //   every face corner or normal), so vertices and vertexMean count each position once, as the OBJ reader counts
 //   each `v` once. JoinIdenticalVertices is not used: it compares normals and UVs too, and it would not merge
 //   the split corners of a flat-shaded cube;
+// - COLLADA: assimp itself turns a Z_UP file to Y-up and applies its <unit>; names are the name attributes;
 // - a mirroring transform (negative determinant) reverses the triangles' winding so that they stay outward.
 //
 // Names: the node name. STL and PLY hold no object names: a single body is named after the file stem, and

@@ -4,6 +4,8 @@
 #include "io/ObjReader.h"
 #include "scene/BodyDef.h"
 
+#include <QFile>
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <cmath>
@@ -47,6 +49,7 @@ private slots:
     void initTestCase();
     void sceneFormats_data();
     void sceneFormats();
+    void colladaUnit();
     void perObjectFormats_data();
     void perObjectFormats();
     void assimpObjMatchesOurReader_data();
@@ -63,24 +66,29 @@ void TestAssimpImport::initTestCase() {
 
 void TestAssimpImport::sceneFormats_data() {
     QTest::addColumn<QString>("file");
-    QTest::newRow("glb") << "scene.glb";
-    QTest::newRow("gltf") << "scene.gltf";
-    QTest::newRow("fbx") << "scene.fbx";
-    QTest::newRow("fbx z-up") << "scene_zup.fbx";
-    QTest::newRow("obj via assimp") << "scene.obj";
+    QTest::addColumn<bool>("objOrder"); // the file lists the objects in the order of Blender's OBJ export
+    QTest::newRow("glb") << "scene.glb" << true;
+    QTest::newRow("gltf") << "scene.gltf" << true;
+    QTest::newRow("fbx") << "scene.fbx" << true;
+    QTest::newRow("fbx z-up") << "scene_zup.fbx" << true;
+    QTest::newRow("dae z-up") << "scene.dae" << false; // Blender's COLLADA writer lists them in reverse
+    QTest::newRow("obj via assimp") << "scene.obj" << true;
 }
 
 void TestAssimpImport::sceneFormats() {
     QFETCH(QString, file);
+    QFETCH(bool, objOrder);
     Result<ObjFile> imported = importWithAssimp(blenderFixture(file));
     QVERIFY2(imported.ok(), imported.ok() ? "" : imported.error().toString().c_str());
     const ObjFile& ref = reference();
 
-    // These formats keep object names and order.
+    // These formats keep object names; bodies come in the file's own order.
     QCOMPARE(int(imported->objects.size()), int(ref.objects.size()));
     for (size_t i = 0; i < ref.objects.size(); ++i) {
         const ObjObject& expected = ref.objects[i];
-        const ObjObject& got = imported->objects[i];
+        const ObjObject* found = objOrder ? &imported->objects[i] : findObject(*imported, expected.name);
+        QVERIFY2(found, expected.name.c_str());
+        const ObjObject& got = *found;
         QCOMPARE(QString::fromStdString(got.name), QString::fromStdString(expected.name));
         QCOMPARE(QString::fromStdString(got.material), QString::fromStdString(expected.material));
         QCOMPARE(int(got.vertices.size()), int(expected.vertices.size()));
@@ -104,6 +112,27 @@ void TestAssimpImport::sceneFormats() {
             QVERIFY2(v > 0 && std::abs(v - signedVolume(expected)) < 1e-4, qPrintable(QString::number(v)));
         }
     }
+}
+
+void TestAssimpImport::colladaUnit() {
+    // The same COLLADA file declared in centimetres: every vertex, and so every mean, is 0.01 of the metre file's.
+    QFile in(QString::fromStdString(blenderFixture("scene.dae")));
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    QByteArray text = in.readAll();
+    QVERIFY(text.contains("meter=\"1\""));
+    text.replace("meter=\"1\"", "meter=\"0.01\"");
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QFile out(dir.filePath("scene_cm.dae"));
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(text);
+    out.close();
+    Result<ObjFile> metres = importWithAssimp(blenderFixture("scene.dae"));
+    Result<ObjFile> centimetres = importWithAssimp(out.fileName().toStdString());
+    QVERIFY(metres.ok() && centimetres.ok());
+    QCOMPARE(centimetres->objects.size(), metres->objects.size());
+    for (size_t i = 0; i < metres->objects.size(); ++i)
+        QVERIFY(glm::length(centimetres->objects[i].vertexMean - 0.01 * metres->objects[i].vertexMean) < 1e-7);
 }
 
 void TestAssimpImport::perObjectFormats_data() {

@@ -73,6 +73,8 @@ def export_all():
     # The same scene declared Z-up and in metres (no unit scale applied): the importer must convert it back.
     bpy.ops.export_scene.fbx(filepath=os.path.join(OUT, "scene_zup.fbx"), use_selection=False, object_types={"MESH"},
                              axis_forward="Y", axis_up="Z", apply_unit_scale=False, mesh_smooth_type="OFF")
+    # COLLADA as Blender writes it by default: Z-up in the file, which assimp turns to Y-up itself.
+    bpy.ops.wm.collada_export(filepath=os.path.join(OUT, "scene.dae"), apply_modifiers=True, selected=False)
     # PLY and STL hold one unnamed mesh per file, so each object gets its own file named after it.
     for obj in list(bpy.context.scene.objects):
         select_only(obj)

@@ -37,8 +37,6 @@ void main() {
     float zAxis = axisLine(vWorld.x, 2.0);
     colour = mix(colour, vec4(0.85, 0.25, 0.28, 0.9), xAxis);
     colour = mix(colour, vec4(0.25, 0.45, 0.90, 0.9), zAxis);
-    colour.a *= fade;
-    if (colour.a < 0.004)
-        discard;
-    fragColour = colour;
+    // No discard: it would stop llvmpipe from rejecting hidden grid pixels by depth before shading them.
+    fragColour = vec4(colour.rgb, colour.a * fade);
 }

@@ -64,13 +64,4 @@ void paintAxisGizmo(QPainter& painter, const Camera& camera, const QPointF& cent
     painter.restore();
 }
 
-void paintSelectionRectangle(QPainter& painter, const QRect& rectangle) {
-    painter.save();
-    painter.setRenderHint(QPainter::Antialiasing, false);
-    painter.setBrush(QColor(255, 255, 255, 24));
-    painter.setPen(QPen(QColor(235, 235, 235, 200), 1.0, Qt::DashLine));
-    painter.drawRect(rectangle.normalized());
-    painter.restore();
-}
-
 } // namespace rl

@@ -1,11 +1,10 @@
-// 2D overlays painted over the viewport's GL image with QPainter: the axis indicator and the box-select rectangle.
-// They are vector drawings in widget pixels, so they stay crisp and need no GL resources of their own.
+// The viewport's axis indicator, painted with QPainter into an image that the renderer blends over the frame.
+// Vector drawing in logical pixels, so it stays crisp at any device pixel ratio.
 #pragma once
 
 #include "viewport/Camera.h"
 
 #include <QPointF>
-#include <QRect>
 
 class QPainter;
 
@@ -13,7 +12,5 @@ namespace rl {
 
 // X red, Y green, Z blue, seen with the camera's rotation, centred at `centre` (widget pixels).
 void paintAxisGizmo(QPainter& painter, const Camera& camera, const QPointF& centre, float radiusPixels);
-
-void paintSelectionRectangle(QPainter& painter, const QRect& rectangle);
 
 } // namespace rl

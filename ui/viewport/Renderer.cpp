@@ -1,12 +1,14 @@
 #include "viewport/Renderer.h"
 
 #include <QDebug>
+#include <QImage>
 #include <QOpenGLShaderProgram>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <cstddef>
+#include <unordered_set>
 
 // Q_INIT_RESOURCE must be used outside any namespace. It makes sure the shaders' resource is linked in even when
 // rl_ui is a static library (the linker would otherwise drop the unreferenced resource object).
@@ -21,6 +23,24 @@ namespace {
 constexpr GLuint kPositionLocation = 0;
 constexpr GLuint kModelLocation = 2; // four vec4 columns: 2, 3, 4, 5
 constexpr GLuint kColourFlagsLocation = 6;
+
+// A mesh is closed when every directed edge (a, b) appears once and its twin (b, a) appears too: then each back
+// face is hidden behind a front face and culling them halves the triangles llvmpipe has to set up and bin.
+bool isClosed(const ViewportMesh& mesh) {
+    if (mesh.triangles.empty())
+        return false;
+    std::unordered_set<uint64_t> edges;
+    edges.reserve(mesh.triangles.size() * 3);
+    auto key = [](uint32_t a, uint32_t b) { return (static_cast<uint64_t>(a) << 32) | b; };
+    for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k)
+            if (!edges.insert(key(t[k], t[(k + 1) % 3])).second)
+                return false;
+    for (uint64_t e : edges)
+        if (!edges.contains(key(static_cast<uint32_t>(e & 0xffffffffu), static_cast<uint32_t>(e >> 32))))
+            return false;
+    return true;
+}
 
 std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* vertexPath, const char* fragmentPath) {
     auto program = std::make_unique<QOpenGLShaderProgram>();
@@ -55,11 +75,14 @@ bool Renderer::initialize() {
     m_outlineProgram = buildProgram(":/shaders/outline.vert", ":/shaders/flat.frag");
     m_backgroundProgram = buildProgram(":/shaders/background.vert", ":/shaders/background.frag");
     m_gridProgram = buildProgram(":/shaders/grid.vert", ":/shaders/grid.frag");
-    if (!m_meshProgram || !m_outlineProgram || !m_backgroundProgram || !m_gridProgram)
+    m_overlayProgram = buildProgram(":/shaders/overlay.vert", ":/shaders/overlay.frag");
+    if (!m_meshProgram || !m_outlineProgram || !m_backgroundProgram || !m_gridProgram || !m_overlayProgram)
         return false;
     glGenVertexArrays(1, &m_emptyVao);
     glGenBuffers(1, &m_instanceBuffer);
     m_instanceBufferCapacity = 0;
+    glGenTextures(1, &m_overlayTexture);
+    m_overlayKey = 0;
     // A new context has none of the old buffers: upload everything again.
     m_meshesDirty = true;
     m_instancesDirty = true;
@@ -73,6 +96,9 @@ void Renderer::release() {
     releaseMeshes();
     glDeleteBuffers(1, &m_instanceBuffer);
     glDeleteVertexArrays(1, &m_emptyVao);
+    glDeleteTextures(1, &m_overlayTexture);
+    m_overlayTexture = 0;
+    m_overlayKey = 0;
     m_instanceBuffer = 0;
     m_emptyVao = 0;
     m_instanceBufferCapacity = 0;
@@ -80,6 +106,7 @@ void Renderer::release() {
     m_outlineProgram.reset();
     m_backgroundProgram.reset();
     m_gridProgram.reset();
+    m_overlayProgram.reset();
     m_initialized = false;
 }
 
@@ -99,6 +126,7 @@ void Renderer::setScene(const ViewportScene& scene) {
         const Bounds b = m_meshes[m].bounds();
         m_ranges[m].centre = b.isEmpty() ? glm::vec3(0.0f) : b.centre();
         m_ranges[m].radius = b.isEmpty() ? 0.0f : 0.5f * glm::length(b.size());
+        m_ranges[m].closed = isClosed(m_meshes[m]);
     }
     // Group instances by mesh (a counting sort) so that each mesh's instances are one contiguous range.
     const int meshCount = static_cast<int>(m_meshes.size());
@@ -193,17 +221,23 @@ void Renderer::uploadInstances() {
     m_instancesDirty = false;
 }
 
-void Renderer::drawMeshes(QOpenGLShaderProgram& program, bool perMeshUniforms) {
+void Renderer::drawMeshes(QOpenGLShaderProgram& program, bool outlinePass) {
     constexpr GLsizei stride = sizeof(InstanceData);
     for (size_t m = 0; m < m_meshGl.size() && m < m_ranges.size(); ++m) {
         const MeshRange& range = m_ranges[m];
         const MeshGl& gl = m_meshGl[m];
         if (range.instanceCount == 0 || gl.indexCount == 0)
             continue;
-        if (perMeshUniforms) {
+        if (outlinePass) {
             setUniform(program, "uMeshCentre", range.centre);
             program.setUniformValue("uMeshRadius", range.radius);
         }
+        // Open meshes (a flat anchor) are two-sided; closed ones show only their front faces anyway.
+        // The outline pass pushes vertices sideways, which can turn a silhouette face around: never cull there.
+        if (range.closed && !outlinePass)
+            glEnable(GL_CULL_FACE);
+        else
+            glDisable(GL_CULL_FACE);
         glBindVertexArray(gl.vao);
         // The instance attributes start at this mesh's range: GL 3.3 has no base-instance draw.
         glBindBuffer(GL_ARRAY_BUFFER, m_instanceBuffer);
@@ -218,6 +252,7 @@ void Renderer::drawMeshes(QOpenGLShaderProgram& program, bool perMeshUniforms) {
     }
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glDisable(GL_CULL_FACE);
 }
 
 void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, const RenderOptions& options) {
@@ -242,7 +277,9 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     glClearDepthf(1.0f);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glDisable(GL_CULL_FACE); // flat anchors are two-sided
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
+    glDisable(GL_CULL_FACE); // drawMeshes enables it per closed mesh
     glDisable(GL_BLEND);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_POLYGON_OFFSET_FILL);
@@ -327,6 +364,44 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     }
 
     glBindVertexArray(0);
+    glUseProgram(0);
+}
+
+void Renderer::drawOverlay(const QImage& image, int x, int y, int pixelWidth, int pixelHeight) {
+    if (!m_initialized || image.isNull() || pixelWidth <= 0 || pixelHeight <= 0)
+        return;
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, m_overlayTexture);
+    if (image.cacheKey() != m_overlayKey) {
+        const QImage rgba = image.convertToFormat(QImage::Format_RGBA8888_Premultiplied);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, rgba.width(), rgba.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                     rgba.constBits());
+        // Drawn 1:1 in device pixels, so nearest sampling keeps the QPainter antialiasing exactly as painted.
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        m_overlayKey = image.cacheKey();
+    }
+    const float x0 = 2.0f * static_cast<float>(x) / static_cast<float>(pixelWidth) - 1.0f;
+    const float y1 = 1.0f - 2.0f * static_cast<float>(y) / static_cast<float>(pixelHeight);
+    const float x1 = x0 + 2.0f * static_cast<float>(image.width()) / static_cast<float>(pixelWidth);
+    const float y0 = y1 - 2.0f * static_cast<float>(image.height()) / static_cast<float>(pixelHeight);
+    glViewport(0, 0, pixelWidth, pixelHeight);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    m_overlayProgram->bind();
+    m_overlayProgram->setUniformValue("uRect", QVector4D(x0, y0, x1, y1));
+    m_overlayProgram->setUniformValue("uImage", 0);
+    glBindVertexArray(m_emptyVao);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    ++m_drawCalls;
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glDisable(GL_BLEND);
     glUseProgram(0);
 }
 

@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 
+class QImage;
 class QOpenGLShaderProgram;
 
 namespace rl {
@@ -47,6 +48,11 @@ public:
     // Draws into the bound framebuffer. pixelWidth/Height are device pixels.
     void render(const Camera& camera, int pixelWidth, int pixelHeight, const RenderOptions& options);
 
+    // Blends a premultiplied image over the frame with its top-left at (x, y) device pixels: the axis indicator,
+    // painted with QPainter into a QImage because QPainter on the GL widget itself costs far more per frame.
+    // The texture is re-uploaded only when the image's cacheKey() changes.
+    void drawOverlay(const QImage& image, int x, int y, int pixelWidth, int pixelHeight);
+
     int drawCallsLastFrame() const { return m_drawCalls; }
 
 private:
@@ -60,6 +66,7 @@ private:
         int instanceCount = 0;
         glm::vec3 centre{0.0f}; // of the mesh's box, shape coordinates: the outline grows away from it
         float radius = 0.0f;    // half the box diagonal
+        bool closed = false;    // watertight and consistently wound: back faces can be culled
     };
     struct MeshGl {
         unsigned vao = 0;
@@ -70,7 +77,7 @@ private:
 
     void uploadMeshes();
     void uploadInstances();
-    void drawMeshes(QOpenGLShaderProgram& program, bool perMeshUniforms);
+    void drawMeshes(QOpenGLShaderProgram& program, bool outlinePass);
     void releaseMeshes();
 
     bool m_initialized = false;
@@ -78,6 +85,9 @@ private:
     std::unique_ptr<QOpenGLShaderProgram> m_outlineProgram;
     std::unique_ptr<QOpenGLShaderProgram> m_backgroundProgram;
     std::unique_ptr<QOpenGLShaderProgram> m_gridProgram;
+    std::unique_ptr<QOpenGLShaderProgram> m_overlayProgram;
+    unsigned m_overlayTexture = 0;
+    qint64 m_overlayKey = 0; // cacheKey() of the image in m_overlayTexture
     unsigned m_emptyVao = 0; // core profile needs a bound VAO even for attribute-less draws
     unsigned m_instanceBuffer = 0;
     size_t m_instanceBufferCapacity = 0;

@@ -8,6 +8,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QPainter>
+#include <QRubberBand>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
 
@@ -77,13 +78,12 @@ void Viewport::paintGL() {
     m_renderer.render(m_camera, static_cast<int>(std::lround(width() * ratio)),
                       static_cast<int>(std::lround(height() * ratio)), m_options);
 
-    const bool boxing = m_drag == Drag::BoxSelect;
-    if (m_axisGizmo || boxing) {
-        QPainter painter(this);
-        if (m_axisGizmo)
-            paintAxisGizmo(painter, m_camera, QPointF(52.0, height() - 52.0), 30.0f);
-        if (boxing)
-            paintSelectionRectangle(painter, QRect(m_pressPosition, m_lastPosition));
+    if (m_axisGizmo) {
+        updateGizmoImage();
+        const int margin = static_cast<int>(std::lround(6 * ratio));
+        m_renderer.drawOverlay(
+            m_gizmoImage, margin, static_cast<int>(std::lround(height() * ratio)) - margin - m_gizmoImage.height(),
+            static_cast<int>(std::lround(width() * ratio)), static_cast<int>(std::lround(height() * ratio)));
     }
     if (m_measureFrameTime)
         context()->functions()->glFinish();
@@ -91,6 +91,21 @@ void Viewport::paintGL() {
     m_lastFrameMs = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
     m_averageFrameMs = m_averageFrameMs == 0.0 ? m_lastFrameMs : 0.95 * m_averageFrameMs + 0.05 * m_lastFrameMs;
     emit frameRendered(m_lastFrameMs);
+}
+
+void Viewport::updateGizmoImage() {
+    // Repainted only when the view direction changes; panning and zooming reuse the uploaded texture.
+    const qreal ratio = devicePixelRatioF();
+    constexpr int kSide = 88; // logical pixels: radius 30 plus room for the labels and the backdrop
+    const QSize pixels(static_cast<int>(std::lround(kSide * ratio)), static_cast<int>(std::lround(kSide * ratio)));
+    if (m_gizmoImage.size() == pixels && m_gizmoForward == m_camera.forward())
+        return;
+    m_gizmoImage = QImage(pixels, QImage::Format_RGBA8888_Premultiplied);
+    m_gizmoImage.setDevicePixelRatio(ratio);
+    m_gizmoImage.fill(Qt::transparent);
+    QPainter painter(&m_gizmoImage);
+    paintAxisGizmo(painter, m_camera, QPointF(0.5 * kSide, 0.5 * kSide), 30.0f);
+    m_gizmoForward = m_camera.forward();
 }
 
 void Viewport::setScene(ViewportScene scene) {
@@ -213,11 +228,14 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     case Drag::PendingClick:
         if ((position - m_pressPosition).manhattanLength() > kClickSlopPixels) {
             m_drag = Drag::BoxSelect;
-            update();
+            if (!m_rubberBand)
+                m_rubberBand = new QRubberBand(QRubberBand::Rectangle, this);
+            m_rubberBand->setGeometry(QRect(m_pressPosition, position).normalized());
+            m_rubberBand->show();
         }
         break;
     case Drag::BoxSelect:
-        update();
+        m_rubberBand->setGeometry(QRect(m_pressPosition, position).normalized());
         break;
     case Drag::None:
         QOpenGLWidget::mouseMoveEvent(event);
@@ -235,8 +253,8 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
         clickSelect(position, m_extendSelection);
     } else if (drag == Drag::BoxSelect) {
         m_lastPosition = position;
+        m_rubberBand->hide();
         boxSelect(QRect(m_pressPosition, position).normalized(), m_extendSelection);
-        update(); // removes the rectangle
     } else if (drag == Drag::None) {
         QOpenGLWidget::mouseReleaseEvent(event);
         return;

@@ -6,6 +6,7 @@
 #include "viewport/Renderer.h"
 #include "viewport/ViewportScene.h"
 
+#include <QImage>
 #include <QList>
 #include <QOpenGLWidget>
 #include <QPoint>
@@ -13,6 +14,8 @@
 
 #include <functional>
 #include <span>
+
+class QRubberBand;
 
 namespace rl {
 
@@ -86,6 +89,7 @@ private:
     void clickSelect(const QPoint& position, bool extend);
     void boxSelect(const QRect& rectangle, bool extend);
     void cameraMoved();
+    void updateGizmoImage();
 
     ViewportScene m_scene;
     Renderer m_renderer;
@@ -93,6 +97,9 @@ private:
     RenderOptions m_options;
     PickFunction m_pick;
     bool m_axisGizmo = true;
+    QImage m_gizmoImage;
+    glm::vec3 m_gizmoForward{0.0f}; // camera direction the image was painted for
+    QRubberBand* m_rubberBand = nullptr;
 
     Drag m_drag = Drag::None;
     QPoint m_pressPosition;

@@ -59,7 +59,7 @@ Real distanceToLine(const Vec3& p, const Vec3& a, const Vec3& b) {
     return len2 > 0.0 ? glm::length(glm::cross(ap, ab)) / std::sqrt(len2) : glm::length(ap);
 }
 
-// Barycentric weights of p's projection on triangle abc, clamped into the triangle.
+// Barycentric weights of p's projection on triangle abc, unclamped (the smallest tells how far outside it is).
 void barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, Real out[3]) {
     const Vec3 v0 = b - a, v1 = c - a, v2 = p - a;
     const Real d00 = glm::dot(v0, v0), d01 = glm::dot(v0, v1), d11 = glm::dot(v1, v1);
@@ -70,8 +70,6 @@ void barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, Rea
         v = (d11 * d20 - d01 * d21) / den;
         w = (d00 * d21 - d01 * d20) / den;
     }
-    v = std::clamp(v, 0.0, 1.0);
-    w = std::clamp(w, 0.0, 1.0 - v);
     out[0] = 1.0 - v - w;
     out[1] = v;
     out[2] = w;
@@ -297,9 +295,32 @@ EpaResult epaPenetration(const Shape& a, const Transform& xfA, const Shape& b, c
     if (bestFace < 0 || status == EpaStatus::Degenerate)
         return result;
 
-    const EpaFace& f = poly.faces[bestFace];
+    // A face of the Minkowski difference that is a polygon is split into coplanar triangles of equal distance, and
+    // the origin projects into only one of them: pick, among the faces as close as the best, the one that holds
+    // the projection, or the witnesses would be extrapolated off the shapes.
+    int chosen = bestFace;
     Real lambda[3];
-    barycentric(f.n * f.dist, poly.verts[f.v[0]].w, poly.verts[f.v[1]].w, poly.verts[f.v[2]].w, lambda);
+    Real inside = -std::numeric_limits<Real>::infinity();
+    for (int i = 0; i < int(poly.faces.size()); ++i) {
+        const EpaFace& g = poly.faces[i];
+        if (!g.alive || g.dist > poly.faces[bestFace].dist + tolerance)
+            continue;
+        Real l[3];
+        barycentric(g.n * g.dist, poly.verts[g.v[0]].w, poly.verts[g.v[1]].w, poly.verts[g.v[2]].w, l);
+        const Real m = std::min({l[0], l[1], l[2]});
+        if (m > inside) {
+            inside = m;
+            chosen = i;
+            std::copy(l, l + 3, lambda);
+        }
+    }
+    const EpaFace& f = poly.faces[chosen];
+    // Clamp into the triangle: rounding may leave the projection a hair outside.
+    for (Real& l : lambda)
+        l = std::max(l, 0.0);
+    const Real sum = lambda[0] + lambda[1] + lambda[2];
+    for (Real& l : lambda)
+        l = sum > 0.0 ? l / sum : 1.0 / 3.0;
     Vec3 pa(0.0), pb(0.0);
     for (int k = 0; k < 3; ++k) {
         pa += lambda[k] * poly.verts[f.v[k]].a;

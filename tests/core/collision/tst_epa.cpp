@@ -127,7 +127,7 @@ private slots:
         std::mt19937_64 rng(20261122);
         std::uniform_real_distribution<Real> u(-1.0, 1.0);
         int compared = 0, fallbacks = 0, apart = 0;
-        Real worst = 0.0, worstAxis = 0.0;
+        Real worst = 0.0, worstAxis = 0.0, worstWitness = 0.0;
         for (int i = 0; i < 10000; ++i) {
             const Shape a = randomPolyhedron(rng);
             const Shape b = randomPolyhedron(rng);
@@ -145,13 +145,16 @@ private slots:
             worst = std::max(worst, std::abs(r.separation - sat.separation));
             // The reported normal must realise the reported depth.
             worstAxis = std::max(worstAxis, std::abs(separationAlong(a, xa, b, xb, r.normal) - r.separation));
+            // The witnesses lie on the normal's line: pointA - pointB == depth * normal.
+            worstWitness = std::max(worstWitness, glm::length((r.pointB - r.pointA) - r.separation * r.normal));
         }
         qInfo("compared %d overlapping pairs (%d apart), worst depth difference %.3g m, worst normal %.3g m, "
-              "%d SAT fallbacks",
-              compared, apart, worst, worstAxis, fallbacks);
+              "worst witness %.3g m, %d SAT fallbacks",
+              compared, apart, worst, worstAxis, worstWitness, fallbacks);
         QVERIFY(compared > 5000);
         QVERIFY(worst < 1e-4);
         QVERIFY(worstAxis < 1e-4);
+        QVERIFY(worstWitness < 1e-9);
         QVERIFY(fallbacks < compared / 100);
     }
 

@@ -1,0 +1,365 @@
+#include "collision/Collide.h"
+
+#include "collision/Epa.h"
+#include "collision/Gjk.h"
+#include "collision/Sat.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace rl {
+
+namespace {
+
+// Feature ids are a hash of the features that made the point (which shape holds the reference face, both face
+// indices and the clipping feature). The same contact configuration gives the same id next frame; a collision
+// between two different configurations only costs a warm start.
+uint32_t featureHash(uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+    uint32_t h = 2166136261u;
+    for (uint32_t v : {a, b, c, d}) {
+        for (int k = 0; k < 4; ++k) {
+            h ^= (v >> (8 * k)) & 0xffu;
+            h *= 16777619u;
+        }
+    }
+    return h;
+}
+
+enum : uint32_t { kTagFace = 1, kTagEdge = 2, kTagSphere = 3, kTagSingle = 4 };
+
+bool finite(const Transform& xf) {
+    Real s = xf.position.x + xf.position.y + xf.position.z;
+    for (int c = 0; c < 3; ++c)
+        s += xf.rotation[c][0] + xf.rotation[c][1] + xf.rotation[c][2];
+    return std::isfinite(s);
+}
+
+void setPoint(ContactPoint& cp, const Vec3& pa, const Vec3& pb, Real separation, uint32_t id, const Transform& xfA,
+              const Transform& xfB) {
+    cp = ContactPoint{};
+    cp.localA = xfA.applyInverse(pa);
+    cp.localB = xfB.applyInverse(pb);
+    cp.position = 0.5 * (pa + pb);
+    cp.separation = separation;
+    cp.featureId = id;
+}
+
+struct ClipVertex {
+    Vec3 p;
+    uint32_t feature;
+};
+
+// Sphere A against anything B whose core GJK handles; sphere-sphere included.
+bool collideSphere(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, Real spec,
+                   Manifold& out) {
+    const GjkResult g = gjkDistance(a, xfA, b, xfB);
+    Vec3 n;
+    Real sep;
+    Vec3 pb;
+    if (g.coreDistance > 0.0) {
+        n = g.normal;
+        sep = g.distance;
+        pb = g.pointB;
+    } else if (!b.isPolyhedral()) {
+        n = Vec3(0.0, 1.0, 0.0); // coincident centres: any direction is exact; +y is the documented one
+        sep = -(a.radius + b.radius);
+        pb = xfB.position - b.radius * n;
+    } else {
+        // The centre is inside the polyhedron (or on it): it leaves fastest through the nearest face plane.
+        const ConvexPolyhedron& P = *b.polyhedron;
+        const Vec3 c = xfB.applyInverse(xfA.position);
+        Real best = -std::numeric_limits<Real>::infinity();
+        Vec3 nl(0.0, 1.0, 0.0);
+        for (const PolyFace& f : P.faces) {
+            const Real s = glm::dot(f.normal, c) - f.offset;
+            if (s > best) {
+                best = s;
+                nl = f.normal;
+            }
+        }
+        n = -xfB.rotate(nl);
+        sep = best - a.radius;
+        pb = xfA.position + best * n;
+    }
+    if (sep > spec)
+        return false;
+    out.normal = n;
+    out.pointCount = 1;
+    setPoint(out.points[0], pb - sep * n, pb, sep, featureHash(kTagSphere, 0, 0, 0), xfA, xfB);
+    return true;
+}
+
+void flipManifold(Manifold& m) {
+    m.normal = -m.normal;
+    for (int i = 0; i < m.pointCount; ++i)
+        std::swap(m.points[i].localA, m.points[i].localB);
+}
+
+// Clips the incident face of `inc` against the reference face `refFace` of `ref` and writes the points that lie
+// within `spec` of the reference plane. refIsA says which of the pair the reference face belongs to.
+bool clipFaces(const Shape& ref, const Transform& xfRef, uint32_t refFace, const Shape& inc, const Transform& xfInc,
+               bool refIsA, Real spec, Manifold& out) {
+    const ConvexPolyhedron& R = *ref.polyhedron;
+    const ConvexPolyhedron& I = *inc.polyhedron;
+    const PolyFace& rf = R.faces[refFace];
+    const Vec3 nR = xfRef.rotate(rf.normal);
+    const Vec3 refOrigin = xfRef.apply(R.vertices[R.faceVertices[rf.first]]);
+    const Real refOffset = glm::dot(nR, refOrigin);
+
+    // Incident face: the one most anti-parallel to the reference normal.
+    const Vec3 nRinI = xfInc.rotateInverse(nR);
+    uint32_t incFace = 0;
+    Real most = std::numeric_limits<Real>::infinity();
+    for (uint32_t i = 0; i < I.faces.size(); ++i) {
+        const Real d = glm::dot(I.faces[i].normal, nRinI);
+        if (d < most) {
+            most = d;
+            incFace = i;
+        }
+    }
+
+    thread_local std::vector<ClipVertex> poly, next;
+    poly.clear();
+    const PolyFace& inf = I.faces[incFace];
+    for (uint32_t k = 0; k < inf.count; ++k)
+        poly.push_back({xfInc.apply(I.vertices[I.faceVertices[inf.first + k]]), k});
+
+    // Sutherland-Hodgman against the side planes of the reference face (edge x normal points outward for a
+    // counter-clockwise loop). Each pass at most adds one vertex, so the loop is bounded by the two face sizes.
+    for (uint32_t k = 0; k < rf.count && !poly.empty(); ++k) {
+        const Vec3 v0 = xfRef.apply(R.vertices[R.faceVertices[rf.first + k]]);
+        const Vec3 v1 = xfRef.apply(R.vertices[R.faceVertices[rf.first + (k + 1) % rf.count]]);
+        Vec3 side = glm::cross(v1 - v0, nR);
+        const Real len = glm::length(side);
+        if (!(len > 0.0))
+            continue;
+        side /= len;
+        const Real off = glm::dot(side, v0);
+        next.clear();
+        for (size_t i = 0; i < poly.size(); ++i) {
+            const ClipVertex& p = poly[i];
+            const ClipVertex& q = poly[(i + 1) % poly.size()];
+            const Real dp = glm::dot(side, p.p) - off;
+            const Real dq = glm::dot(side, q.p) - off;
+            if (dp <= 0.0)
+                next.push_back(p);
+            if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) {
+                const Real t = dp / (dp - dq);
+                next.push_back({p.p + t * (q.p - p.p), featureHash(kTagEdge, k, p.feature, q.feature)});
+            }
+        }
+        std::swap(poly, next);
+    }
+
+    thread_local std::vector<Vec3> pts;
+    thread_local std::vector<Real> seps;
+    thread_local std::vector<uint32_t> ids;
+    pts.clear();
+    seps.clear();
+    ids.clear();
+    for (const ClipVertex& v : poly) {
+        const Real s = glm::dot(nR, v.p) - refOffset;
+        if (s <= spec) {
+            pts.push_back(v.p);
+            seps.push_back(s);
+            ids.push_back(featureHash(refIsA ? kTagFace : kTagFace + 16, refFace, incFace, v.feature));
+        }
+    }
+    if (pts.empty()) {
+        // Rounding can clip away a contact the SAT saw (a vertex grazing the face's rim): keep the deepest
+        // incident vertex so that the pair still gets a point.
+        const Vec3 p = xfInc.apply(I.support(-nRinI));
+        const Real s = glm::dot(nR, p) - refOffset;
+        if (s > spec)
+            return false;
+        pts.push_back(p);
+        seps.push_back(s);
+        ids.push_back(featureHash(kTagSingle, refFace, I.supportIndex(-nRinI), refIsA));
+    }
+    int chosen[4];
+    const int n = reduceContactPoints(pts.data(), seps.data(), int(pts.size()), nR, chosen);
+    const Transform& xfA = refIsA ? xfRef : xfInc;
+    const Transform& xfB = refIsA ? xfInc : xfRef;
+    out.normal = refIsA ? nR : -nR;
+    out.pointCount = n;
+    for (int i = 0; i < n; ++i) {
+        const Vec3 p = pts[size_t(chosen[i])];
+        const Real s = seps[size_t(chosen[i])];
+        const Vec3 onRef = p - s * nR;
+        if (refIsA)
+            setPoint(out.points[i], onRef, p, s, ids[size_t(chosen[i])], xfA, xfB);
+        else
+            setPoint(out.points[i], p, onRef, s, ids[size_t(chosen[i])], xfA, xfB);
+    }
+    return n > 0;
+}
+
+// Reference face on whichever shape has a face best aligned with the normal (A wins near ties, for stability).
+bool clipAlongNormal(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, const Vec3& n,
+                     Real spec, Manifold& out, Real& bestAlignment) {
+    auto bestFace = [](const Shape& s, const Transform& xf, const Vec3& dir, Real& align) {
+        const Vec3 local = xf.rotateInverse(dir);
+        uint32_t best = 0;
+        align = -2.0;
+        for (uint32_t i = 0; i < s.polyhedron->faces.size(); ++i) {
+            const Real d = glm::dot(s.polyhedron->faces[i].normal, local);
+            if (d > align) {
+                align = d;
+                best = i;
+            }
+        }
+        return best;
+    };
+    Real alignA, alignB;
+    const uint32_t fa = bestFace(a, xfA, n, alignA);
+    const uint32_t fb = bestFace(b, xfB, -n, alignB);
+    // A keeps the reference face when both are aligned (face against face), for frame-to-frame stability.
+    const bool useA = alignA >= alignB || alignA > 1.0 - 1e-9;
+    bestAlignment = useA ? alignA : alignB;
+    if (useA)
+        return clipFaces(a, xfA, fa, b, xfB, true, spec, out);
+    return clipFaces(b, xfB, fb, a, xfA, false, spec, out);
+}
+
+bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, Real spec,
+                      Manifold& out, const CollideOptions& options) {
+    if (options.method == PolyhedronMethod::GjkEpa && !a.isFlat() && !b.isFlat()) {
+        const GjkResult g = gjkDistance(a, xfA, b, xfB);
+        if (g.distance > spec)
+            return false;
+        Vec3 n = g.normal;
+        Vec3 pa = g.pointA, pb = g.pointB;
+        Real sep = g.distance;
+        bool haveNormal = g.coreDistance > 0.0;
+        if (!haveNormal) {
+            const EpaResult e = epaPenetration(a, xfA, b, xfB, g);
+            if (e.status == EpaStatus::Converged) {
+                n = e.normal;
+                pa = e.pointA;
+                pb = e.pointB;
+                sep = -e.depth;
+                haveNormal = true;
+            }
+        }
+        if (haveNormal) {
+            // EPA's normal is a face normal exactly (up to rounding) when a face carries the contact; otherwise the
+            // Minkowski face came from two edges and the contact is one point at the witnesses.
+            Real alignment;
+            Manifold m;
+            if (clipAlongNormal(a, xfA, b, xfB, n, spec, m, alignment) && alignment > 1.0 - 1e-9) {
+                m.bodyA = out.bodyA;
+                m.bodyB = out.bodyB;
+                out = m;
+                return true;
+            }
+            out.normal = n;
+            out.pointCount = 1;
+            setPoint(out.points[0], pa, pb, sep, featureHash(kTagSingle, 0, 0, 0), xfA, xfB);
+            return true;
+        }
+        // EPA gave up: the SAT below is the exact fallback.
+    }
+    SatOptions so;
+    so.earlyOut = spec;
+    so.faceBias = options.faceBias;
+    const SatResult sat = satPolyhedra(a, xfA, b, xfB, so);
+    if (sat.separation > spec)
+        return false;
+    if (sat.feature == SatFeature::FaceA)
+        return clipFaces(a, xfA, sat.face, b, xfB, true, spec, out);
+    if (sat.feature == SatFeature::FaceB)
+        return clipFaces(b, xfB, sat.face, a, xfA, false, spec, out);
+    out.normal = sat.normal;
+    out.pointCount = 1;
+    setPoint(out.points[0], sat.pointA, sat.pointB, sat.separation, featureHash(kTagEdge + 32, sat.edgeA, sat.edgeB, 0),
+             xfA, xfB);
+    return true;
+}
+
+} // namespace
+
+int reduceContactPoints(const Vec3* p, const Real* sep, int count, const Vec3& normal, int chosen[4]) {
+    if (count <= 0)
+        return 0;
+    if (count <= 4) {
+        for (int i = 0; i < count; ++i)
+            chosen[i] = i;
+        return count;
+    }
+    // 1. The deepest point: the solver needs it most.
+    int i0 = 0;
+    for (int i = 1; i < count; ++i)
+        if (sep[i] < sep[i0])
+            i0 = i;
+    // 2. The farthest from it: the longest base.
+    int i1 = -1;
+    Real best = -1.0;
+    for (int i = 0; i < count; ++i) {
+        const Vec3 d = p[i] - p[i0];
+        const Real d2 = glm::dot(d, d);
+        if (i != i0 && d2 > best) {
+            best = d2;
+            i1 = i;
+        }
+    }
+    // 3. The largest triangle on that base.
+    int i2 = -1;
+    Real area = 0.0;
+    for (int i = 0; i < count; ++i) {
+        if (i == i0 || i == i1)
+            continue;
+        const Real a = std::abs(glm::dot(glm::cross(p[i1] - p[i0], p[i] - p[i0]), normal));
+        if (a > area) {
+            area = a;
+            i2 = i;
+        }
+    }
+    chosen[0] = i0;
+    chosen[1] = i1;
+    if (i2 < 0 || !(area > 1e-12 * best)) // all on a line: its two ends carry the contact
+        return 2;
+    chosen[2] = i2;
+    // 4. The point that adds the most area outside the triangle.
+    const Real orient = glm::dot(glm::cross(p[i1] - p[i0], p[i2] - p[i0]), normal) > 0.0 ? 1.0 : -1.0;
+    const int tri[3] = {i0, i1, i2};
+    int i3 = -1;
+    Real added = 0.0;
+    for (int i = 0; i < count; ++i) {
+        if (i == i0 || i == i1 || i == i2)
+            continue;
+        for (int e = 0; e < 3; ++e) {
+            const Vec3& u = p[tri[e]];
+            const Vec3& v = p[tri[(e + 1) % 3]];
+            const Real s = -orient * glm::dot(glm::cross(v - u, p[i] - u), normal);
+            if (s > added) {
+                added = s;
+                i3 = i;
+            }
+        }
+    }
+    if (i3 < 0)
+        return 3;
+    chosen[3] = i3;
+    return 4;
+}
+
+bool collide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, Real speculativeDistance,
+             Manifold& out, const CollideOptions& options) {
+    out.pointCount = 0;
+    if (!finite(xfA) || !finite(xfB) || !std::isfinite(speculativeDistance))
+        return false;
+    const Real spec = std::max(speculativeDistance, 0.0);
+    if (a.kind == ShapeKind::Sphere)
+        return collideSphere(a, xfA, b, xfB, spec, out);
+    if (b.kind == ShapeKind::Sphere) {
+        if (!collideSphere(b, xfB, a, xfA, spec, out))
+            return false;
+        flipManifold(out);
+        return true;
+    }
+    return collidePolyhedra(a, xfA, b, xfB, spec, out, options);
+}
+
+} // namespace rl

@@ -1,0 +1,34 @@
+// Contact manifold generation for a pair of shapes: the normal from SAT (or GJK/EPA), the incident face clipped
+// against the reference face, and a reduction to the four points that keep the largest area.
+#pragma once
+
+#include "collision/Manifold.h"
+#include "collision/Shape.h"
+
+namespace rl {
+
+// How polyhedron pairs (boxes and hulls) find their contact normal and features. Both are exact; the SAT is the
+// default because bench_narrowphase measured it faster on boxes and it names the touching features directly,
+// which keeps feature ids stable. GJK/EPA is kept for comparison and for hulls with many faces.
+enum class PolyhedronMethod : uint8_t { Sat, GjkEpa };
+
+struct CollideOptions {
+    PolyhedronMethod method = PolyhedronMethod::Sat;
+    // Face contacts win over edge contacts unless the edge axis is deeper by this much (m). A face patch is more
+    // stable to stack on than a single edge point, and near ties would otherwise flicker frame to frame.
+    Real faceBias = 1e-4;
+};
+
+// Fills `out` (normal from A to B, up to 4 points, separation < 0 in penetration) and returns true when the
+// shapes touch or are closer than speculativeDistance; points with 0 < separation <= speculativeDistance are
+// speculative contacts for the solver. out.bodyA/bodyB are left alone; impulses are zeroed (see ContactCache).
+// localA/localB are in each shape's coordinates: pass transforms whose origin is the body's centre of mass.
+// Non-finite transforms give no contact rather than NaN.
+bool collide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, Real speculativeDistance,
+             Manifold& out, const CollideOptions& options = {});
+
+// The reduction on its own, for the tests: picks up to 4 of `count` points lying on a plane with unit normal
+// `normal`, deepest first, then keeping the largest area. Writes the chosen indices, returns how many.
+int reduceContactPoints(const Vec3* points, const Real* separations, int count, const Vec3& normal, int chosen[4]);
+
+} // namespace rl

@@ -1,0 +1,372 @@
+// Contact manifolds: resting boxes give their four corners, flat anchors push back to the side a body is on,
+// feature ids persist under small motion, speculative points appear within the margin, and both polyhedron
+// methods (SAT and GJK/EPA) agree with the exact depth.
+#include "CollisionTestShapes.h"
+#include "collision/Collide.h"
+#include "collision/Penetration.h"
+#include "collision/Sat.h"
+
+#include <QtTest>
+
+#include <set>
+
+using namespace rl;
+using namespace rl::test;
+
+Q_DECLARE_METATYPE(rl::PolyhedronMethod)
+
+namespace {
+
+Transform at(const Vec3& p) {
+    return {p, Mat3(1.0)};
+}
+
+// Every manifold point must be finite, on the normal's line through its witnesses, and its two witnesses must
+// lie on (or within tolerance of) the two shapes' surfaces.
+bool manifoldIsConsistent(const Manifold& m, const Transform& xa, const Transform& xb) {
+    if (std::abs(glm::length(m.normal) - 1.0) > 1e-9)
+        return false;
+    for (int i = 0; i < m.pointCount; ++i) {
+        const ContactPoint& c = m.points[i];
+        const Vec3 pa = xa.apply(c.localA), pb = xb.apply(c.localB);
+        if (!std::isfinite(c.separation + pa.x + pa.y + pa.z + pb.x + pb.y + pb.z))
+            return false;
+        if (std::abs(glm::dot(pb - pa, m.normal) - c.separation) > 1e-9)
+            return false;
+        if (glm::length((pb - pa) - c.separation * m.normal) > 1e-9)
+            return false;
+    }
+    return true;
+}
+
+// Area of the convex hull of four coplanar points (normal y): the largest of the three diagonal pairings.
+Real quadAreaY(const Vec3 p[4]) {
+    Real best = 0.0;
+    const int orders[3][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 1, 3, 2}};
+    for (const auto& o : orders)
+        best = std::max(best, 0.5 * std::abs(glm::cross(p[o[2]] - p[o[0]], p[o[3]] - p[o[1]]).y));
+    return best;
+}
+
+std::set<Vec3, bool (*)(const Vec3&, const Vec3&)> cornerSet() {
+    return std::set<Vec3, bool (*)(const Vec3&, const Vec3&)>(
+        [](const Vec3& a, const Vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
+}
+
+} // namespace
+
+class TestManifold : public QObject {
+    Q_OBJECT
+private slots:
+    void boxRestingOnBox_data() {
+        QTest::addColumn<PolyhedronMethod>("method");
+        QTest::addColumn<Real>("yaw");
+        QTest::addColumn<Vec3>("baseHalf");
+        QTest::newRow("sat aligned") << PolyhedronMethod::Sat << 0.0 << Vec3(2.0, 0.5, 2.0);
+        QTest::newRow("sat yawed 30") << PolyhedronMethod::Sat << kPi / 6 << Vec3(2.0, 0.5, 2.0);
+        QTest::newRow("sat equal boxes") << PolyhedronMethod::Sat << 0.0 << Vec3(0.5);
+        QTest::newRow("epa aligned") << PolyhedronMethod::GjkEpa << 0.0 << Vec3(2.0, 0.5, 2.0);
+        QTest::newRow("epa yawed 30") << PolyhedronMethod::GjkEpa << kPi / 6 << Vec3(2.0, 0.5, 2.0);
+        QTest::newRow("epa equal boxes") << PolyhedronMethod::GjkEpa << 0.0 << Vec3(0.5);
+    }
+
+    // A box resting flat on a box: four points, at the four bottom corners, each 1 mm deep.
+    void boxRestingOnBox() {
+        QFETCH(PolyhedronMethod, method);
+        QFETCH(Real, yaw);
+        QFETCH(Vec3, baseHalf);
+        const Shape base = mustShape(makeBox(baseHalf));
+        const Shape cube = mustShape(makeBox(Vec3(0.5)));
+        const Real depth = 0.001;
+        const Transform xc =
+            Transform::fromQuat(Vec3(0.0, baseHalf.y + 0.5 - depth, 0.0), axisAngle(Vec3(0, 1, 0), yaw));
+        Manifold m;
+        CollideOptions options;
+        options.method = method;
+        QVERIFY(collide(base, Transform{}, cube, xc, 0.01, m, options));
+        QCOMPARE(m.pointCount, 4);
+        QVERIFY(angleDegrees(m.normal, Vec3(0, 1, 0)) < 0.1);
+        QVERIFY(manifoldIsConsistent(m, Transform{}, xc));
+        // Each corner of the cube's bottom face is matched by exactly one point.
+        int matched = 0;
+        for (int sx = -1; sx <= 1; sx += 2) {
+            for (int sz = -1; sz <= 1; sz += 2) {
+                const Vec3 corner = xc.apply(Vec3(0.5 * sx, -0.5, 0.5 * sz));
+                for (int i = 0; i < m.pointCount; ++i) {
+                    const Vec3 onCube = xc.apply(m.points[i].localB);
+                    if (glm::length(onCube - corner) < 1e-9) {
+                        ++matched;
+                        QVERIFY(std::abs(m.points[i].separation + depth) < 1e-9);
+                    }
+                }
+            }
+        }
+        QCOMPARE(matched, 4);
+    }
+
+    // Flat two-sided anchors: a cube on either side gets four points and a normal that pushes it back to its side.
+    void flatAnchor_data() {
+        QTest::addColumn<Real>("side");
+        QTest::addColumn<Real>("penetration");
+        QTest::newRow("above, 1 mm") << 1.0 << 0.001;
+        QTest::newRow("below, 1 mm") << -1.0 << 0.001;
+        QTest::newRow("above, 40 cm") << 1.0 << 0.4;
+        QTest::newRow("below, 40 cm") << -1.0 << 0.4;
+        QTest::newRow("above, speculative 3 mm") << 1.0 << -0.003;
+    }
+
+    void flatAnchor() {
+        QFETCH(Real, side);
+        QFETCH(Real, penetration);
+        const Shape floor = mustShape(
+            makeHull(flatPolygonHull({Vec3(-5, 0, -5), Vec3(5, 0, -5), Vec3(5, 0, 5), Vec3(-5, 0, 5)}, Vec3(0, 1, 0))));
+        const Shape cube = mustShape(makeBox(Vec3(0.5)));
+        const Transform xc = at(Vec3(0.3, side * (0.5 - penetration), -1.2));
+        for (int order = 0; order < 2; ++order) {
+            Manifold m;
+            const bool hit = order == 0 ? collide(floor, Transform{}, cube, xc, 0.01, m)
+                                        : collide(cube, xc, floor, Transform{}, 0.01, m);
+            QVERIFY(hit);
+            QCOMPARE(m.pointCount, 4);
+            const Vec3 push = order == 0 ? m.normal : -m.normal; // from the floor to the cube
+            QVERIFY(angleDegrees(push, Vec3(0.0, side, 0.0)) < 0.1);
+            for (int i = 0; i < m.pointCount; ++i)
+                QVERIFY(std::abs(m.points[i].separation + penetration) < 1e-9);
+            QVERIFY(order == 0 ? manifoldIsConsistent(m, Transform{}, xc) : manifoldIsConsistent(m, xc, Transform{}));
+        }
+    }
+
+    // Feature ids identify the same corners after a small motion; they are distinct within a manifold.
+    void featureIdsPersist() {
+        const Shape base = mustShape(makeBox(Vec3(2.0, 0.5, 2.0)));
+        const Shape cube = mustShape(makeBox(Vec3(0.5)));
+        std::vector<std::pair<uint32_t, Vec3>> first;
+        for (int step = 0; step < 10; ++step) {
+            const Transform xc = Transform::fromQuat(Vec3(0.001 * step, 0.999 - 0.0001 * step, 0.0005 * step),
+                                                     axisAngle(Vec3(0, 1, 0), 0.002 * step));
+            Manifold m;
+            QVERIFY(collide(base, Transform{}, cube, xc, 0.01, m));
+            QCOMPARE(m.pointCount, 4);
+            std::set<uint32_t> ids;
+            for (int i = 0; i < m.pointCount; ++i)
+                ids.insert(m.points[i].featureId);
+            QCOMPARE(int(ids.size()), 4);
+            for (int i = 0; i < m.pointCount; ++i) {
+                if (step == 0) {
+                    first.push_back({m.points[i].featureId, m.points[i].localB});
+                    continue;
+                }
+                // The same id must name the same corner of the cube.
+                bool found = false;
+                for (const auto& [id, local] : first)
+                    found = found || (id == m.points[i].featureId && glm::length(local - m.points[i].localB) < 1e-9);
+                QVERIFY(found);
+            }
+        }
+    }
+
+    void speculative_data() {
+        QTest::addColumn<Real>("gap");
+        QTest::addColumn<Real>("margin");
+        QTest::addColumn<int>("points");
+        QTest::newRow("5 mm gap, 1 cm margin") << 0.005 << 0.01 << 4;
+        QTest::newRow("5 mm gap, 1 mm margin") << 0.005 << 0.001 << 0;
+        QTest::newRow("touching, no margin") << 0.0 << 0.0 << 4;
+    }
+
+    void speculative() {
+        QFETCH(Real, gap);
+        QFETCH(Real, margin);
+        QFETCH(int, points);
+        const Shape base = mustShape(makeBox(Vec3(2.0, 0.5, 2.0)));
+        const Shape cube = mustShape(makeBox(Vec3(0.5)));
+        const Transform xc = Transform::fromQuat(Vec3(0.1, 1.0 + gap, 0.0), axisAngle(Vec3(0, 1, 0), 0.3));
+        for (PolyhedronMethod method : {PolyhedronMethod::Sat, PolyhedronMethod::GjkEpa}) {
+            Manifold m;
+            CollideOptions options;
+            options.method = method;
+            QCOMPARE(collide(base, Transform{}, cube, xc, margin, m, options), points > 0);
+            QCOMPARE(m.pointCount, points);
+            for (int i = 0; i < m.pointCount; ++i)
+                QVERIFY(std::abs(m.points[i].separation - gap) < 1e-9);
+        }
+    }
+
+    // Spheres: one point, analytic depth, normal and position, in both orders.
+    void spheres_data() {
+        QTest::addColumn<int>("kind"); // 0 sphere, 1 box, 2 hull
+        QTest::addColumn<Vec3>("centre");
+        QTest::addColumn<Real>("separation");
+        QTest::addColumn<Vec3>("normal");
+        QTest::newRow("sphere-sphere") << 0 << Vec3(0.3, 0.4, 0.0) << -0.3 << Vec3(0.6, 0.8, 0.0);
+        QTest::newRow("sphere-box face") << 1 << Vec3(0.2, 0.7, 0.1) << -0.1 << Vec3(0, 1, 0);
+        QTest::newRow("sphere-box inside") << 1 << Vec3(0.4, 0.1, 0.0) << -0.4 << Vec3(1, 0, 0);
+        QTest::newRow("sphere-box speculative") << 1 << Vec3(0.2, 0.805, 0.1) << 0.005 << Vec3(0, 1, 0);
+        QTest::newRow("sphere-hull face") << 2 << Vec3(0.0, -0.75, 0.1) << -0.05 << Vec3(0, -1, 0);
+    }
+
+    void spheres() {
+        QFETCH(int, kind);
+        QFETCH(Vec3, centre);
+        QFETCH(Real, separation);
+        QFETCH(Vec3, normal);
+        const Shape ball = mustShape(makeSphere(0.3));
+        std::vector<Vec3> hexagon;
+        for (int i = 0; i < 6; ++i)
+            hexagon.push_back({0.8 * std::cos(i * kPi / 3), 0.0, 0.8 * std::sin(i * kPi / 3)});
+        const Shape other = kind == 0   ? mustShape(makeSphere(0.5))
+                            : kind == 1 ? mustShape(makeBox(Vec3(0.5)))
+                                        : mustShape(makeHull(prismHull(hexagon, 0.5)));
+        const Transform xs = at(centre);
+        Manifold m;
+        QVERIFY(collide(other, Transform{}, ball, xs, 0.01, m));
+        QCOMPARE(m.pointCount, 1);
+        QVERIFY(std::abs(m.points[0].separation - separation) < 1e-9);
+        QVERIFY(angleDegrees(m.normal, normal) < 0.1);
+        QVERIFY(manifoldIsConsistent(m, Transform{}, xs));
+        QVERIFY(glm::length(xs.apply(m.points[0].localB) - (centre - 0.3 * normal)) < 1e-3);
+        Manifold r;
+        QVERIFY(collide(ball, xs, other, Transform{}, 0.01, r));
+        QCOMPARE(r.pointCount, 1);
+        QVERIFY(angleDegrees(r.normal, -normal) < 0.1);
+        QVERIFY(std::abs(r.points[0].separation - separation) < 1e-9);
+        QVERIFY(manifoldIsConsistent(r, xs, Transform{}));
+    }
+
+    // Crossed edges give one point at the analytic closest pair.
+    void edgeOnEdge() {
+        const Shape unit = mustShape(makeBox(Vec3(0.5)));
+        const Real s2 = std::sqrt(2.0);
+        const Transform xa = Transform::fromQuat(Vec3(0.0), axisAngle(Vec3(0, 0, 1), kPi / 4));
+        const Transform xb = Transform::fromQuat(Vec3(0.0, 1.3, 0.0), axisAngle(Vec3(1, 0, 0), kPi / 4));
+        Manifold m;
+        QVERIFY(collide(unit, xa, unit, xb, 0.01, m));
+        QCOMPARE(m.pointCount, 1);
+        QVERIFY(angleDegrees(m.normal, Vec3(0, 1, 0)) < 0.1);
+        QVERIFY(std::abs(m.points[0].separation - (1.3 - s2)) < 1e-9);
+        QVERIFY(glm::length(m.points[0].position - Vec3(0.0, 0.5 * (s2 / 2 + 1.3 - s2 / 2), 0.0)) < 1e-3);
+        QVERIFY(manifoldIsConsistent(m, xa, xb));
+    }
+
+    // Random hull pairs: the deepest manifold point matches the exact depth with both methods, and the points are
+    // consistent with the normal.
+    void randomHulls_data() {
+        QTest::addColumn<PolyhedronMethod>("method");
+        QTest::newRow("sat") << PolyhedronMethod::Sat;
+        QTest::newRow("gjk-epa") << PolyhedronMethod::GjkEpa;
+    }
+
+    void randomHulls() {
+        QFETCH(PolyhedronMethod, method);
+        std::mt19937_64 rng(11);
+        std::uniform_real_distribution<Real> u(-1.0, 1.0);
+        CollideOptions options;
+        options.method = method;
+        options.faceBias = 0.0;
+        int touching = 0;
+        Real worst = 0.0;
+        for (int i = 0; i < 2000; ++i) {
+            const Shape a = randomPolyhedron(rng);
+            const Shape b = randomPolyhedron(rng);
+            const Transform xa = Transform::fromQuat(Vec3(0.0), randomRotation(rng));
+            const Transform xb = Transform::fromQuat(Vec3(u(rng), u(rng), u(rng)) * 0.8, randomRotation(rng));
+            Manifold m;
+            const bool hit = collide(a, xa, b, xb, 0.0, m, options);
+            const SatResult sat = satPolyhedra(a, xa, b, xb);
+            QCOMPARE(hit, sat.separation <= 0.0);
+            if (!hit)
+                continue;
+            ++touching;
+            QVERIFY(m.pointCount >= 1 && m.pointCount <= 4);
+            if (!manifoldIsConsistent(m, xa, xb)) {
+                for (int k = 0; k < m.pointCount; ++k) {
+                    const Vec3 d = xb.apply(m.points[k].localB) - xa.apply(m.points[k].localA);
+                    qWarning("pair %d point %d/%d sep %.17g along %.17g lateral %.3g", i, k, m.pointCount,
+                             m.points[k].separation, glm::dot(d, m.normal),
+                             glm::length(d - m.points[k].separation * m.normal));
+                }
+            }
+            QVERIFY(manifoldIsConsistent(m, xa, xb));
+            Real deepest = 0.0;
+            for (int k = 0; k < m.pointCount; ++k)
+                deepest = std::min(deepest, m.points[k].separation);
+            worst = std::max(worst, std::abs(deepest - sat.separation));
+        }
+        qInfo("%d touching pairs, worst deepest-point error %.3g m", touching, worst);
+        QVERIFY(touching > 500);
+        QVERIFY(worst < 1e-6);
+    }
+
+    // The reduction keeps the deepest point and nearly the largest area the candidates allow.
+    void reductionKeepsArea() {
+        std::mt19937_64 rng(5);
+        std::uniform_real_distribution<Real> u(-1.0, 1.0);
+        Real worstRatio = 1.0;
+        for (int trial = 0; trial < 500; ++trial) {
+            const int n = 5 + int(rng() % 8);
+            std::vector<Vec3> pts(static_cast<size_t>(n));
+            std::vector<Real> seps(static_cast<size_t>(n));
+            for (int i = 0; i < n; ++i) {
+                pts[size_t(i)] = Vec3(u(rng), 0.0, u(rng));
+                seps[size_t(i)] = -0.01 * (1.0 + u(rng));
+            }
+            int chosen[4];
+            const int k = reduceContactPoints(pts.data(), seps.data(), n, Vec3(0, 1, 0), chosen);
+            QVERIFY(k >= 3);
+            if (k == 3)
+                chosen[3] = chosen[2]; // every other point lies inside the triangle: it is the hull
+            const int deepest = int(std::min_element(seps.begin(), seps.end()) - seps.begin());
+            QVERIFY(std::find(chosen, chosen + 4, deepest) != chosen + 4);
+            auto quadArea = [&](const int q[4]) {
+                const Vec3 four[4] = {pts[size_t(q[0])], pts[size_t(q[1])], pts[size_t(q[2])], pts[size_t(q[3])]};
+                return quadAreaY(four);
+            };
+            Real optimum = 0.0;
+            for (int a = 0; a < n; ++a)
+                for (int b = a + 1; b < n; ++b)
+                    for (int c = b + 1; c < n; ++c)
+                        for (int d = c + 1; d < n; ++d) {
+                            const int q[4] = {a, b, c, d};
+                            if (std::find(q, q + 4, deepest) != q + 4)
+                                optimum = std::max(optimum, quadArea(q));
+                        }
+            worstRatio = std::min(worstRatio, quadArea(chosen) / optimum);
+        }
+        qInfo("worst area ratio to the best quadrilateral through the deepest point: %.3f", worstRatio);
+        QVERIFY(worstRatio > 0.7);
+    }
+
+    // A 1,000-gon face (a 2,000-vertex prism) lying on a box: still four points, all at the right depth.
+    void bigFaceOnBox() {
+        std::vector<Vec3> polygon;
+        for (int i = 0; i < 1000; ++i)
+            polygon.push_back({std::cos(2 * kPi * i / 1000), 0.0, std::sin(2 * kPi * i / 1000)});
+        const Shape disc = mustShape(makeHull(prismHull(polygon, 0.1)));
+        QCOMPARE(disc.polyhedron->vertices.size(), size_t(2000));
+        const Shape base = mustShape(makeBox(Vec3(3.0, 0.5, 3.0)));
+        const Transform xd = at(Vec3(0.2, 0.598, 0.0));
+        Manifold m;
+        QVERIFY(collide(base, Transform{}, disc, xd, 0.01, m));
+        QCOMPARE(m.pointCount, 4);
+        QVERIFY(manifoldIsConsistent(m, Transform{}, xd));
+        for (int i = 0; i < 4; ++i)
+            QVERIFY(std::abs(m.points[i].separation + 0.002) < 1e-9);
+        // The four kept rim points span most of the disc: the inscribed square has area 2.
+        const Vec3 four[4] = {m.points[0].position, m.points[1].position, m.points[2].position, m.points[3].position};
+        QVERIFY(quadAreaY(four) > 1.9);
+    }
+
+    void nonFiniteInputGivesNoContact() {
+        const Shape cube = mustShape(makeBox(Vec3(0.5)));
+        Manifold m;
+        m.pointCount = 3;
+        QVERIFY(!collide(cube, Transform{}, cube, at(Vec3(std::nan(""), 0.0, 0.0)), 0.01, m));
+        QCOMPARE(m.pointCount, 0);
+        Transform bad;
+        bad.rotation[1][1] = std::numeric_limits<Real>::infinity();
+        QVERIFY(!collide(cube, bad, cube, Transform{}, 0.01, m));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestManifold)
+#include "tst_manifold.moc"

@@ -155,7 +155,7 @@ void DynamicTree::removeLeaf(int32_t leaf) {
         (g.child1 == parent ? g.child1 : g.child2) = sibling;
         m_nodes[sibling].parent = grandparent;
         freeNode(parent);
-        refitUpwards(grandparent);
+        shrinkUpwards(grandparent);
     } else {
         m_root = sibling;
         m_nodes[sibling].parent = kNullNode;
@@ -172,11 +172,30 @@ void DynamicTree::refitNode(int32_t index) {
     node.height = 1 + std::max(c1.height, c2.height);
 }
 
+// After a removal the ancestors can only shrink. Once a node comes out unchanged, so do all above it, so the walk
+// stops there. No rotations here: the reinsertion that usually follows rotates along its own path.
+void DynamicTree::shrinkUpwards(int32_t index) {
+    while (index != kNullNode) {
+        Node& node = m_nodes[index];
+        const Aabb oldBox = node.box;
+        const int32_t oldHeight = node.height;
+        refitNode(index);
+        if (node.box == oldBox && node.height == oldHeight)
+            return;
+        index = node.parent;
+    }
+}
+
 // Walks to the root: the path is at most the tree height long, and each node is refitted after its children.
 void DynamicTree::refitUpwards(int32_t index) {
     while (index != kNullNode) {
+        Node& node = m_nodes[index];
+        const Aabb oldBox = node.box;
+        const int32_t oldHeight = node.height;
         refitNode(index);
         rotate(index);
+        if (node.box == oldBox && node.height == oldHeight)
+            return;
         index = m_nodes[index].parent;
     }
 }

@@ -117,6 +117,7 @@ private:
     void removeLeaf(int32_t leaf);
     int32_t findBestSibling(const Aabb& box) const;
     void refitUpwards(int32_t node);
+    void shrinkUpwards(int32_t node);
     void rotate(int32_t node);
     void swapChildWithGrandchild(int32_t parent, int32_t child, int32_t other, int32_t grandchild);
     void swapGrandchildren(int32_t parent, int32_t grandchildOfFirst, int32_t grandchildOfSecond);

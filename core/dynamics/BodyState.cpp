@@ -1,5 +1,7 @@
 #include "dynamics/BodyState.h"
 
+#include "geometry/MassProperties.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -14,57 +16,6 @@ bool isFinite(const Vec3& v) {
 
 bool isFinite(const Mat3& m) {
     return isFinite(m[0]) && isFinite(m[1]) && isFinite(m[2]);
-}
-
-// Cyclic Jacobi on a symmetric 3x3 matrix. Kept local rather than borrowed from geometry/ so that creating bodies does
-// not depend on the hull code; it is small, and for 3x3 it converges to machine precision in a handful of sweeps.
-void symmetricEigen(const Mat3& tensor, Vec3& values, Mat3& axes) {
-    Real a[3][3];
-    Real v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-            a[r][c] = 0.5 * (tensor[c][r] + tensor[r][c]);
-    constexpr int kMaxSweeps = 32; // quadratic convergence: 3x3 needs about 5; the bound only guards against NaN
-    for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {
-        const Real off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
-        const Real diag = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
-        if (!(off > 1e-32 * diag))
-            break;
-        for (int p = 0; p < 2; ++p) {
-            for (int q = p + 1; q < 3; ++q) {
-                if (a[p][q] == 0.0)
-                    continue;
-                const Real theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
-                const Real t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
-                const Real c = 1.0 / std::sqrt(t * t + 1.0);
-                const Real s = t * c;
-                for (int k = 0; k < 3; ++k) { // A <- A J
-                    const Real akp = a[k][p], akq = a[k][q];
-                    a[k][p] = c * akp - s * akq;
-                    a[k][q] = s * akp + c * akq;
-                }
-                for (int k = 0; k < 3; ++k) { // A <- J^T A
-                    const Real apk = a[p][k], aqk = a[q][k];
-                    a[p][k] = c * apk - s * aqk;
-                    a[q][k] = s * apk + c * aqk;
-                }
-                for (int k = 0; k < 3; ++k) { // V <- V J
-                    const Real vkp = v[k][p], vkq = v[k][q];
-                    v[k][p] = c * vkp - s * vkq;
-                    v[k][q] = s * vkp + c * vkq;
-                }
-            }
-        }
-    }
-    int order[3] = {0, 1, 2};
-    std::sort(order, order + 3, [&](int i, int j) { return a[i][i] < a[j][j]; });
-    for (int c = 0; c < 3; ++c) {
-        values[c] = a[order[c]][order[c]];
-        for (int r = 0; r < 3; ++r)
-            axes[c][r] = v[r][order[c]];
-    }
-    if (glm::determinant(axes) < 0.0)
-        axes[2] = -axes[2]; // a reflection cannot be an orientation
 }
 
 Error bodyError(const std::string& message) {
@@ -119,7 +70,9 @@ Result<uint32_t> BodyState::addBody(const BodyInit& init) {
             return bodyError("inertia is not finite");
         Vec3 moments;
         Mat3 axes;
-        symmetricEigen(init.inertia, moments, axes);
+        principalAxes(init.inertia, moments, axes);
+        if (glm::determinant(axes) < 0.0)
+            axes[2] = -axes[2]; // a reflection cannot be folded into an orientation
         const Real scale = std::max(std::abs(moments[2]), 1e-300);
         if (!(moments[0] > 1e-12 * scale))
             return bodyError("inertia is not positive definite");
@@ -150,6 +103,28 @@ Result<uint32_t> BodyState::addBody(const BodyInit& init) {
     smoothRotation.push_back(identityQuat());
     info.push_back(bookkeeping);
     return size() - 1;
+}
+
+Result<BodyInit> bodyInitFromHull(const ConvexHull& hull, Real density, const Vec3& shapePosition,
+                                  const Quat& shapeOrientation) {
+    if (!std::isfinite(density) || !(density > 0.0))
+        return bodyError("density must be a finite number > 0");
+    if (!hull.isSolid())
+        return bodyError("a dynamic body needs a hull with volume");
+    const MassProperties properties = hullMassProperties(hull);
+    if (!(properties.volume > 0.0) || !std::isfinite(properties.volume))
+        return bodyError("the hull has no volume");
+    const Real qNorm = glm::length(shapeOrientation);
+    if (!std::isfinite(qNorm) || qNorm < 1e-12 || !isFinite(shapePosition))
+        return bodyError("placement is not finite");
+    const Quat q = shapeOrientation / qNorm;
+    BodyInit init;
+    init.orientation = q;
+    init.comInShape = properties.centroid;
+    init.centerOfMass = shapePosition + q * properties.centroid;
+    init.mass = density * properties.volume;
+    init.inertia = rotateInertia(density * properties.inertia, glm::mat3_cast(q));
+    return init;
 }
 
 Mat3 BodyState::worldInverseInertia(uint32_t i) const {

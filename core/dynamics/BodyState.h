@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/Result.h"
+#include "geometry/ConvexHull.h"
 #include "math/Types.h"
 
 #include <cstdint>
@@ -115,5 +116,11 @@ struct BodyState {
     Quat shapeOrientation(uint32_t i) const;
     Vec3 shapeOrigin(uint32_t i) const;
 };
+
+// Inertia from the hull: mass, centre of mass and inertia of a solid hull (geometry/MassProperties.h, exact by the
+// divergence theorem) at the given density, placed by the shape's position and orientation. Velocities, damping and
+// flags are left at their defaults. Fails for flat or empty hulls and for densities that are not finite and positive.
+Result<BodyInit> bodyInitFromHull(const ConvexHull& hull, Real density, const Vec3& shapePosition,
+                                  const Quat& shapeOrientation);
 
 } // namespace rl

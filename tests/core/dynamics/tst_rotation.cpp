@@ -3,6 +3,8 @@
 #include "dynamics/BodyState.h"
 #include "dynamics/Gyroscopic.h"
 #include "dynamics/Integrator.h"
+#include "geometry/ConvexHull.h"
+#include "geometry/MassProperties.h"
 
 #include <QTest>
 
@@ -131,6 +133,8 @@ class TestRotation : public QObject {
     Q_OBJECT
 
 private slots:
+    void tHandleInertiaMatchesGeometry();
+    void bodyFromHull();
     void principalFrameRoundTrip();
     void rejectsImpossibleInertia_data();
     void rejectsImpossibleInertia();
@@ -143,6 +147,65 @@ private slots:
     void gyroscopicStepInvariants_data();
     void gyroscopicStepInvariants();
 };
+
+std::vector<Vec3> boxCorners(const Vec3& halfExtents, const Vec3& center) {
+    std::vector<Vec3> corners;
+    for (int i = 0; i < 8; ++i)
+        corners.push_back(center + Vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1) * halfExtents);
+    return corners;
+}
+
+void TestRotation::tHandleInertiaMatchesGeometry() {
+    // The hand-built tensor must agree with the geometry module's divergence-theorem integrals of the two boxes,
+    // combined with its parallel-axis shift.
+    const RigidData hand = tHandle();
+    const std::pair<Vec3, Vec3> parts[] = {{{0.01, 0.05, 0.01}, {0.0, 0.0, 0.0}},
+                                           {{0.04, 0.01, 0.01}, {0.0, 0.06, 0.0}}};
+    Mat3 total(0.0);
+    Real mass = 0.0;
+    for (const auto& [halfExtents, center] : parts) {
+        const std::vector<Vec3> corners = boxCorners(halfExtents, center);
+        const MassProperties box = hullMassProperties(computeConvexHull(corners));
+        const Real m = kSteel * box.volume;
+        mass += m;
+        total += shiftInertia(kSteel * box.inertia, m, hand.com - box.centroid);
+    }
+    QVERIFY(std::abs(mass - hand.mass) < 1e-12 * hand.mass);
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            QVERIFY2(std::abs(total[c][r] - hand.inertia[c][r]) < 1e-9 * hand.inertia[0][0],
+                     qPrintable(QString("%1 vs %2").arg(total[c][r]).arg(hand.inertia[c][r])));
+}
+
+void TestRotation::bodyFromHull() {
+    // A rotated, displaced box hull: mass, centre of mass and world inertia must be the box's closed forms.
+    const Vec3 half(0.3, 0.1, 0.2), offset(0.5, -0.2, 0.1);
+    const Quat q = glm::normalize(Quat(0.8, 0.1, 0.5, -0.3));
+    const Vec3 where(1.0, 2.0, -3.0);
+    const auto init = bodyInitFromHull(computeConvexHull(boxCorners(half, offset)), 700.0, where, q);
+    QVERIFY(init.ok());
+    const Real mass = 700.0 * 8.0 * half.x * half.y * half.z;
+    QVERIFY(std::abs(init->mass - mass) < 1e-12 * mass);
+    QVERIFY(glm::length(init->centerOfMass - (where + q * offset)) < 1e-12);
+    Mat3 boxInertia(0.0);
+    boxInertia[0][0] = mass / 3.0 * (half.y * half.y + half.z * half.z);
+    boxInertia[1][1] = mass / 3.0 * (half.x * half.x + half.z * half.z);
+    boxInertia[2][2] = mass / 3.0 * (half.x * half.x + half.y * half.y);
+    const Mat3 r = glm::mat3_cast(q);
+    const Mat3 expected = r * boxInertia * glm::transpose(r);
+    for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k)
+            QVERIFY(std::abs(init->inertia[c][k] - expected[c][k]) < 1e-12 * boxInertia[0][0]);
+    BodyState state;
+    QVERIFY(state.addBody(*init).ok());
+    QVERIFY(std::abs(std::abs(glm::dot(state.shapeOrientation(0), q)) - 1.0) < 1e-12);
+    QVERIFY(glm::length(state.shapeOrigin(0) - where) < 1e-12);
+    // Bad input is an Error, not a crash: a flat hull, a bad density.
+    const std::vector<Vec3> flat = {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {1, 0, 1}};
+    QVERIFY(!bodyInitFromHull(computeConvexHull(flat), 700.0, where, q).ok());
+    QVERIFY(!bodyInitFromHull(computeConvexHull(boxCorners(half, offset)), -1.0, where, q).ok());
+    QVERIFY(!bodyInitFromHull(computeConvexHull(boxCorners(half, offset)), std::nan(""), where, q).ok());
+}
 
 void TestRotation::principalFrameRoundTrip() {
     // A rotated, non-diagonal tensor: addBody must diagonalise it, keep the user's orientation, and give back the

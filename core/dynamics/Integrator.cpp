@@ -2,6 +2,8 @@
 
 #include "dynamics/Gyroscopic.h"
 
+#include <cmath>
+
 namespace rl {
 
 namespace {
@@ -53,6 +55,8 @@ void angularVelocityPhase(BodyState& state, uint32_t i, Real dt, Real c, Integra
 
 void integrateVelocities(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,
                          Integrator integrator, bool rotationEnabled) {
+    if (!(dt > 0.0) || !std::isfinite(dt))
+        return; // a step of no time (or a broken one) moves nothing
     const uint32_t end = std::min(range.end, state.size());
     const auto gravityField = [&gravity](const Vec3&) { return gravity; };
     for (uint32_t i = range.begin; i < end; ++i) {
@@ -74,6 +78,8 @@ void integrateVelocities(BodyState& state, BodyRange range, Real dt, const Vec3&
 
 void integratePositions(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,
                         Integrator integrator, bool rotationEnabled) {
+    if (!(dt > 0.0) || !std::isfinite(dt))
+        return;
     const uint32_t end = std::min(range.end, state.size());
     const auto gravityField = [&gravity](const Vec3&) { return gravity; };
     for (uint32_t i = range.begin; i < end; ++i) {

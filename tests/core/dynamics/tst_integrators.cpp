@@ -244,6 +244,13 @@ void TestIntegrators::staticSleepingAndLinearOnly() {
     QCOMPARE(state.position[2], Vec3(2.0));
     QCOMPARE(state.linearVelocity[2], Vec3(1.0, 0.0, 0.0));
     QVERIFY(state.position[1].y < 1.0);
+    // A step of no time, or a non-finite one, moves nothing.
+    for (Real dt : {0.0, -0.01, static_cast<Real>(std::nan("")), static_cast<Real>(INFINITY)}) {
+        const Vec3 x = state.position[1], v = state.linearVelocity[1];
+        integrateSmooth(state, allBodies(state), dt, Vec3(0.0, -9.81, 0.0), Damping{}, Integrator::Rk4, true);
+        QCOMPARE(state.position[1], x);
+        QCOMPARE(state.linearVelocity[1], v);
+    }
     // A range leaves the bodies outside it alone.
     const Vec3 before = state.position[1];
     integrateSmooth(state, BodyRange{2, 3}, 0.01, Vec3(0.0, -9.81, 0.0), Damping{}, Integrator::Rk4, true);

@@ -3,6 +3,7 @@
 #include "geometry/ConvexHull.h"
 #include "io/AssimpImporter.h"
 #include "io/NumberFormat.h"
+#include "io/SceneJson.h"
 
 #include <algorithm>
 #include <cctype>
@@ -175,8 +176,12 @@ Result<Scene> importScene(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec))
         return Error{path, 0, {}, "file not found"};
-    if (ext == ".rlscene")
-        return Error{path, 0, {}, "reading .rlscene files is not available in this build yet"};
+    if (ext == ".rlscene") {
+        Result<Scene> scene = readSceneFile(path);
+        if (scene && scene->sourcePath.empty())
+            scene->sourcePath = path;
+        return scene;
+    }
 
     Scene scene;
     if (ext == ".obj") {

@@ -51,7 +51,7 @@ private slots:
     void formats();
     void objKeepsSourceText();
     void extensionIsCaseInsensitive();
-    void rlsceneNotReadHere();
+    void rlsceneGoesToSceneJson();
     void roundTripSampleScenes_data();
     void roundTripSampleScenes();
     void primitives_data();
@@ -119,17 +119,40 @@ void TestSceneImport::extensionIsCaseInsensitive() {
     QCOMPARE(QString::fromStdString(scene->bodies.at(0).material), QStringLiteral("Wood"));
 }
 
-void TestSceneImport::rlsceneNotReadHere() {
+void TestSceneImport::rlsceneGoesToSceneJson() {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
-    const QString path = dir.filePath("a.rlscene");
+    const QString path = dir.filePath("a.RLSCENE");
     QFile f(path);
     QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write("{}\n");
+    f.write(R"({ "format": "rigidlab-scene", "version": 1,
+  "bodies": [ { "name": "Floor", "anchor": true, "shape": { "box": [20, 0.5, 20] }, "position": [0, -0.5, 0] },
+              { "name": "Ball", "shape": { "sphere": 0.5 }, "position": [2, 3, 0] } ] }
+)");
     f.close();
     Result<Scene> scene = importScene(path.toStdString());
-    QVERIFY(!scene.ok());
-    QCOMPARE(scene.error().file, path.toStdString());
+    QVERIFY2(scene.ok(), scene.ok() ? "" : scene.error().toString().c_str());
+    QCOMPARE(int(scene->bodies.size()), 2);
+    QCOMPARE(scene->bodies[0].shape.type, ShapeType::Box);
+    QVERIFY(scene->bodies[0].anchor);
+    QVERIFY(scene->sourceObjText.empty());
+    QVERIFY(!scene->sourcePath.empty());
+
+    // Its errors come back through importScene unchanged, naming the file.
+    QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write("{ \"format\": \"rigidlab-scene\", \"version\": 1, \"bodies\": [ { \"nmae\": \"X\" } ] }\n");
+    f.close();
+    Result<Scene> bad = importScene(path.toStdString());
+    QVERIFY(!bad.ok());
+    QCOMPARE(bad.error().file, path.toStdString());
+    qInfo("%s", bad.error().toString().c_str());
+
+    // A scene that is not from one OBJ file is written as OBJ from its shapes.
+    Result<ObjFile> back = roundTrip(*scene);
+    QVERIFY2(back.ok(), back.ok() ? "" : back.error().toString().c_str());
+    QCOMPARE(int(back->objects.size()), 2);
+    QVERIFY(glm::length(back->objects[0].vertexMean - Vec3(0.0, -0.5, 0.0)) < 1e-12);
+    QVERIFY(glm::length(back->objects[1].vertexMean - Vec3(2.0, 3.0, 0.0)) < 1e-12);
 }
 
 void TestSceneImport::roundTripSampleScenes_data() {

@@ -28,10 +28,11 @@ enum BodyFlag : uint8_t {
 // through the world or overflows to infinity; a scene that hits it is not simulated faithfully, and the counters
 // below say so. The values are limits on what one substep may do, not physical constants.
 struct SpeedLimits {
-    // m/s. Well above anything the sample scenes do (the fastest, DESIGN.md's "Shot", starts at 300 m/s).
+    // m/s. Well above DESIGN.md's fastest example body ("Shot", 300 m/s).
     Real maxLinearSpeed = 1000.0;
-    // rad per substep. Box2D's choice: a quarter turn is the largest rotation per substep for which the linearised
-    // contact constraints still point the right way, so faster spins are clamped rather than solved wrongly.
+    // rad per substep: 45 degrees, the value Box2D uses. Past it the contact points and normals the solver linearised
+    // at the start of the substep no longer describe where the body is, so faster spins are clamped, not solved
+    // wrongly.
     Real maxRotationPerSubstep = 0.25 * kPi;
 };
 

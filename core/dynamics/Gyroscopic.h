@@ -37,11 +37,11 @@ inline constexpr int kMidpointMaxIterations = 8; // Newton converges quadratical
 // the body frame. Fourth order in both; the quaternion is renormalised at the end (RK4 does not keep |q| = 1).
 void rotationRk4(Quat& orientation, Vec3& bodyOmega, const Vec3& inertia, Real damping, Real dt);
 
-// The rotation by the vector theta (axis theta/|theta|, angle |theta|), exact: the exponential map. Used to advance an
-// orientation by w dt. It is exact for a constant w, so the orientation update adds no error of its own beyond what
-// using one w over the substep costs: first order with w taken at one end (the Euler methods), second with w at the
-// middle (Verlet). Normalising a first-order update q + dt q w / 2 instead would be just as accurate but distorts
-// large rotations; the exponential map stays correct up to the clamp's quarter turn.
+// The rotation by the vector theta (axis theta/|theta|, angle |theta|): the exponential map, exact for any angle. Used
+// to advance an orientation by w dt, where it is exact for a constant w, so the update adds no error beyond that of
+// holding w constant over the substep: first order with w taken at one end (the Euler methods), second with w at the
+// middle (Verlet). A first-order update q + dt (0, w) q / 2 followed by normalisation would keep the same orders but
+// shortens large rotations (to 2 atan(angle / 2)).
 Quat rotationFromVector(const Vec3& theta);
 
 // Applies SpeedLimits to one body's velocities for a substep of dt; returns true and counts when it changed them.

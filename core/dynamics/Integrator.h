@@ -18,12 +18,13 @@ namespace rl {
 //  - a body whose velocity the solver left alone moves by its integrator's own displacement and rotation, so free
 //    flight keeps each scheme's textbook accuracy;
 //  - a body whose velocity the solver (or the speed clamp) changed moves with the solved velocity, x += v dt and q by
-//    w dt. That is the assumption the solver's non-penetration and friction rows are built on; adding the smooth part's
-//    own curvature on top (RK4's v dt + a dt^2/2 instead of v dt) would lift a resting body by a dt^2/2 every substep.
+//    w dt. That is the assumption the solver's non-penetration and friction rows are built on. Keeping the smooth
+//    displacement and adding the solver's change times dt instead would lift a body resting on the ground by
+//    |g| dt^2 / 2 every substep under RK4 (its displacement v0 dt + g dt^2/2 is not v1 dt).
 // So wherever a contact acts, every scheme is first order in position, as any velocity-level solver is; the schemes
 // differ in free flight, in rotation and in damping.
 //
-//   explicit-euler    velocity phase: records x += v_old dt, then v += a dt (damping factor 1 - c dt, never below 0).
+//   explicit-euler    velocity phase: records x += v_old dt, then v += (a - c v) dt.
 //                     Orientation advances by w_old, and w keeps its body-frame components (explicit Euler on
 //                     (q, w_body)). Rotation: explicit Euler on Euler's equations, which gains |L| and energy every
 //                     step (see Gyroscopic.h). The original project's scheme. First order.
@@ -82,7 +83,7 @@ void integrateSmooth(BodyState& state, BodyRange range, Real dt, const Vec3& gra
 
 // ---- The translation kernel, shared by the bodies above and by the accuracy study's 1D problems ----
 // One particle (V = Real or Vec3) under x'' = a(x) - c x'. Same two phases and same scratch as above: the velocity
-// phase writes the smooth displacement and velocity, the position phase adds what changed the velocity in between.
+// phase writes the smooth displacement and velocity, the position phase checks whether anything changed v in between.
 
 namespace detail {
 // True where an explicit decay over h would overshoot (see "Stiff damping" above).

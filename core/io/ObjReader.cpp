@@ -287,15 +287,17 @@ private:
             std::string_view digits = parts[0].front() == '+' ? parts[0].substr(1) : parts[0];
             auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
             const int64_t defined = static_cast<int64_t>(m_vertices.size());
-            const std::string range = defined == 0 ? "(no vertex defined yet)" : "(1.." + std::to_string(defined) + ")";
+            auto range = [defined] {
+                return defined == 0 ? std::string("(no vertex defined yet)") : "(1.." + std::to_string(defined) + ")";
+            };
             if (ec != std::errc() || ptr != digits.data() + digits.size())
-                return fail(lineNumber, "face index " + quoted(parts[0]) + " out of range " + range);
+                return fail(lineNumber, "face index " + quoted(parts[0]) + " out of range " + range());
             if (index == 0)
                 return fail(lineNumber, "face index 0 is invalid: OBJ indices start at 1");
             // Negative indices count back from the last vertex defined so far.
             const int64_t resolved = index > 0 ? index - 1 : defined + index;
             if (resolved < 0 || resolved >= defined)
-                return fail(lineNumber, "face index " + std::to_string(index) + " out of range " + range);
+                return fail(lineNumber, "face index " + std::to_string(index) + " out of range " + range());
             m_corners.push_back(static_cast<uint32_t>(resolved));
         }
         record.count = m_corners.size() - record.first;

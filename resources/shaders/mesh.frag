@@ -15,10 +15,10 @@ void main() {
     if (dot(n, uEye - vWorld) < 0.0)
         n = -n;
     // Hemisphere light: cool sky from above, warm dark bounce from below, so side faces differ from top faces.
-    vec3 sky = vec3(0.62, 0.66, 0.72);
-    vec3 ground = vec3(0.22, 0.20, 0.19);
+    vec3 sky = vec3(0.66, 0.69, 0.75);
+    vec3 ground = vec3(0.30, 0.28, 0.27);
     vec3 hemisphere = mix(ground, sky, 0.5 + 0.5 * n.y);
     float lambert = max(dot(n, uKeyDirection), 0.0);
-    vec3 light = 0.08 + 0.55 * hemisphere + 0.55 * lambert * vec3(1.0, 0.98, 0.95);
+    vec3 light = 0.06 + 0.50 * hemisphere + 0.50 * lambert * vec3(1.0, 0.98, 0.95);
     fragColour = vec4(vColour * light, 1.0);
 }

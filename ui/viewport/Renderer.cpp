@@ -299,9 +299,9 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     m_meshProgram->bind();
     setUniform(*m_meshProgram, "uViewProjection", viewProjection);
     setUniform(*m_meshProgram, "uEye", eye);
-    // The key light sits above, to the left of and behind the camera, so the faces the user looks at are lit and
-    // neighbouring faces of a box get different shades.
-    const glm::vec3 key = glm::normalize(-camera.forward() + 1.1f * camera.up() - 0.6f * camera.right());
+    // The key light is nearly a headlight, a little above and to the left of the camera: every face the user can
+    // see gets some of it (also from below the floor), and neighbouring faces of a box still get different shades.
+    const glm::vec3 key = glm::normalize(-camera.forward() + 0.25f * camera.up() - 0.25f * camera.right());
     setUniform(*m_meshProgram, "uKeyDirection", key);
     drawMeshes(*m_meshProgram, false);
 

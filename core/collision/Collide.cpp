@@ -225,7 +225,10 @@ bool clipAlongNormal(const Shape& a, const Transform& xfA, const Shape& b, const
 
 bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, Real spec,
                       Manifold& out, const CollideOptions& options) {
-    if (options.method == PolyhedronMethod::GjkEpa && !a.isFlat() && !b.isFlat()) {
+    const bool useEpa = options.method == PolyhedronMethod::GjkEpa ||
+                        (options.method == PolyhedronMethod::Auto &&
+                         a.polyhedron->edges.size() * b.polyhedron->edges.size() > kSatMaxEdgePairs);
+    if (useEpa && !a.isFlat() && !b.isFlat()) {
         const GjkResult g = gjkDistance(a, xfA, b, xfB);
         if (g.distance > spec)
             return false;
@@ -234,7 +237,7 @@ bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, cons
         Real sep = g.distance;
         bool haveNormal = g.coreDistance > 0.0;
         if (!haveNormal) {
-            const EpaResult e = epaPenetration(a, xfA, b, xfB, g);
+            const EpaResult e = epaPenetration(a, xfA, b, xfB, g, options.epa);
             if (e.status == EpaStatus::Converged) {
                 n = e.normal;
                 pa = e.pointA;

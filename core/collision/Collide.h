@@ -2,21 +2,28 @@
 // against the reference face, and a reduction to the four points that keep the largest area.
 #pragma once
 
+#include "collision/Epa.h"
 #include "collision/Manifold.h"
 #include "collision/Shape.h"
 
 namespace rl {
 
-// How polyhedron pairs (boxes and hulls) find their contact normal and features. Both are exact; the SAT is the
-// default because bench_narrowphase measured it faster on boxes and it names the touching features directly,
-// which keeps feature ids stable. GJK/EPA is kept for comparison and for hulls with many faces.
-enum class PolyhedronMethod : uint8_t { Sat, GjkEpa };
+// How polyhedron pairs (boxes and hulls) find their contact normal and features. Both are exact. The SAT's edge
+// query costs edgesA * edgesB, GJK/EPA grows with the vertex count only. bench_narrowphase measured the SAT faster
+// for box-box (12 x 12 edge pairs) and GJK/EPA faster for 32-vertex hulls (48 x 48), so Auto takes the SAT up to
+// box-box size (and for flat anchors, whose side rule lives in the SAT) and GJK/EPA above it, falling back to the
+// SAT when EPA gives up.
+enum class PolyhedronMethod : uint8_t { Auto, Sat, GjkEpa };
+
+// Auto uses the SAT while edgesA * edgesB is at most this: the box-box count.
+inline constexpr size_t kSatMaxEdgePairs = 144;
 
 struct CollideOptions {
-    PolyhedronMethod method = PolyhedronMethod::Sat;
+    PolyhedronMethod method = PolyhedronMethod::Auto;
     // Face contacts win over edge contacts unless the edge axis is deeper by this much (m). A face patch is more
     // stable to stack on than a single edge point, and near ties would otherwise flicker frame to frame.
     Real faceBias = 1e-4;
+    EpaOptions epa; // when EPA runs out of budget the SAT answers instead
 };
 
 // Fills `out` (normal from A to B, up to 4 points, separation < 0 in penetration) and returns true when the

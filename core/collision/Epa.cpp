@@ -90,14 +90,19 @@ EpaResult epaPenetration(const Shape& a, const Transform& xfA, const Shape& b, c
     if (poly.verts.empty())
         poly.verts.push_back(support(a, xfA, b, xfB, Vec3(1.0, 0.0, 0.0)));
 
-    // Size of the problem: the Minkowski difference's extent along the axes. Tolerances are relative to it, so a
-    // 1 mm body against a 1 km body is handled at the precision the numbers allow.
+    // Size of the problem, for the tolerances: the largest support point GJK met, or the axis extent of the
+    // difference when GJK stopped on its first vertex. Relative tolerances let a 1 mm body against a 1 km body be
+    // handled at the precision the numbers allow.
     Real scale = 0.0;
-    for (int i = 0; i < 3; ++i) {
-        Vec3 axis(0.0);
-        axis[i] = 1.0;
-        scale = std::max(scale, glm::dot(support(a, xfA, b, xfB, axis).w, axis) -
-                                    glm::dot(support(a, xfA, b, xfB, -axis).w, axis));
+    for (const SimplexVertex& v : poly.verts)
+        scale = std::max(scale, glm::length(v.w));
+    if (poly.verts.size() < 4) {
+        for (int i = 0; i < 3; ++i) {
+            Vec3 axis(0.0);
+            axis[i] = 1.0;
+            scale = std::max(scale, glm::dot(support(a, xfA, b, xfB, axis).w, axis) -
+                                        glm::dot(support(a, xfA, b, xfB, -axis).w, axis));
+        }
     }
     if (!(scale > 0.0) || !std::isfinite(scale))
         return result;

@@ -8,19 +8,6 @@ namespace rl {
 
 namespace {
 
-// Do the Gauss-map arcs a-b (edge of A) and c-d (edge of -B) cross? Only then can the edge pair be a face of the
-// Minkowski difference and its cross product a candidate axis (Gregorius). The third test rejects crossings of
-// the great circles that lie on the far hemisphere.
-bool isMinkowskiFace(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-    const Vec3 bxa = glm::cross(b, a);
-    const Vec3 dxc = glm::cross(d, c);
-    const Real cba = glm::dot(c, bxa);
-    const Real dba = glm::dot(d, bxa);
-    const Real adc = glm::dot(a, dxc);
-    const Real bdc = glm::dot(b, dxc);
-    return cba * dba < 0.0 && adc * bdc < 0.0 && cba * bdc > 0.0;
-}
-
 Real supportValue(const std::vector<Vec3>& points, const Vec3& d) {
     Real best = -std::numeric_limits<Real>::infinity();
     for (const Vec3& p : points)
@@ -128,30 +115,54 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
     SatResult edges;
     edges.feature = SatFeature::EdgePair;
     const bool anyFlat = A.flat || B.flat;
+    // Per-edge data of B in A's frame, computed once: the two normals of the edge of -B and their cross product,
+    // so that the Gauss-map test of a pair costs four dot products.
+    struct EdgeData {
+        Vec3 c, d, dxc, q0, e2;
+    };
+    thread_local std::vector<EdgeData> be;
+    be.resize(B.edges.size());
+    for (size_t ib = 0; ib < B.edges.size(); ++ib) {
+        const PolyEdge& eb = B.edges[ib];
+        EdgeData& e = be[ib];
+        e.c = -bn[eb.face0];
+        e.d = -bn[eb.face1];
+        e.dxc = glm::cross(e.d, e.c);
+        e.q0 = bv[eb.v0];
+        e.e2 = bv[eb.v1] - e.q0;
+    }
     for (uint32_t ia = 0; ia < A.edges.size(); ++ia) {
         const PolyEdge& ea = A.edges[ia];
         const Vec3& pa0 = A.vertices[ea.v0];
         const Vec3 e1 = A.vertices[ea.v1] - pa0;
-        const Vec3& na0 = A.faces[ea.face0].normal;
-        const Vec3& na1 = A.faces[ea.face1].normal;
+        const Vec3& na = A.faces[ea.face0].normal;
+        const Vec3& nb = A.faces[ea.face1].normal;
+        const Vec3 bxa = glm::cross(nb, na);
         const Real len1 = glm::length(e1);
-        for (uint32_t ib = 0; ib < B.edges.size(); ++ib) {
-            const PolyEdge& eb = B.edges[ib];
-            if (!anyFlat && !isMinkowskiFace(na0, na1, -bn[eb.face0], -bn[eb.face1]))
-                continue;
-            const Vec3& qb0 = bv[eb.v0];
-            const Vec3 e2 = bv[eb.v1] - qb0;
-            Vec3 axis = glm::cross(e1, e2);
+        for (uint32_t ib = 0; ib < be.size(); ++ib) {
+            const EdgeData& e = be[ib];
+            if (!anyFlat) {
+                // Do the arcs na-nb (edge of A) and c-d (edge of -B) cross on the Gauss map? Only then is the
+                // pair a face of the Minkowski difference (Gregorius). The last test rejects crossings of the
+                // great circles on the far hemisphere.
+                const Real cba = glm::dot(e.c, bxa);
+                const Real dba = glm::dot(e.d, bxa);
+                const Real adc = glm::dot(na, e.dxc);
+                const Real bdc = glm::dot(nb, e.dxc);
+                if (!(cba * dba < 0.0 && adc * bdc < 0.0 && cba * bdc > 0.0))
+                    continue;
+            }
+            Vec3 axis = glm::cross(e1, e.e2);
             const Real len = glm::length(axis);
             // Parallel edges give no axis of their own; the face axes next to them cover that case.
-            if (!(len > 1e-6 * len1 * glm::length(e2)))
+            if (!(len > 1e-6 * len1 * glm::length(e.e2)))
                 continue;
             axis /= len;
             Real sep;
             if (!anyFlat) {
                 if (glm::dot(axis, pa0 - cA) < 0.0)
                     axis = -axis;
-                sep = glm::dot(axis, qb0 - pa0);
+                sep = glm::dot(axis, e.q0 - pa0);
             } else {
                 // A flat polygon's edges bound a half circle of the Gauss map, not an arc between two normals,
                 // so no pruning: the axis is oriented towards B and measured with the support functions.
@@ -165,7 +176,7 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
                 edges.edgeB = ib;
                 edges.normal = axis;
                 if (sep > options.earlyOut) {
-                    closestPointsSegments(pa0, pa0 + e1, qb0, qb0 + e2, edges.pointA, edges.pointB);
+                    closestPointsSegments(pa0, pa0 + e1, e.q0, e.q0 + e.e2, edges.pointA, edges.pointB);
                     return finish(edges);
                 }
             }

@@ -3,6 +3,7 @@
 // methods (SAT and GJK/EPA) agree with the exact depth.
 #include "CollisionTestShapes.h"
 #include "collision/Collide.h"
+#include "collision/Gjk.h"
 #include "collision/Penetration.h"
 #include "collision/Sat.h"
 
@@ -354,6 +355,59 @@ private slots:
         // The four kept rim points span most of the disc: the inscribed square has area 2.
         const Vec3 four[4] = {m.points[0].position, m.points[1].position, m.points[2].position, m.points[3].position};
         QVERIFY(quadAreaY(four) > 1.9);
+    }
+
+    // EPA out of budget inside collide(): the SAT answers, with the same manifold the SAT method gives.
+    void epaBudgetFallsBackToSat() {
+        std::vector<Vec3> polygon;
+        for (int i = 0; i < 16; ++i)
+            polygon.push_back({0.5 * std::cos(2 * kPi * i / 16), 0.0, 0.5 * std::sin(2 * kPi * i / 16)});
+        const Shape prism = mustShape(makeHull(prismHull(polygon, 0.4)));
+        const Transform xb = Transform::fromQuat(Vec3(0.2, 0.7, 0.1), axisAngle(Vec3(1, 0, 1), 0.3));
+        CollideOptions starved;
+        starved.method = PolyhedronMethod::GjkEpa;
+        starved.epa.maxFaces = 4;
+        CollideOptions sat;
+        sat.method = PolyhedronMethod::Sat;
+        // This budget really makes EPA give up on this pair.
+        const GjkResult g = gjkDistance(prism, Transform{}, prism, xb);
+        QCOMPARE(epaPenetration(prism, Transform{}, prism, xb, g, starved.epa).status, EpaStatus::BudgetExceeded);
+        Manifold m, reference;
+        QVERIFY(collide(prism, Transform{}, prism, xb, 0.01, m, starved));
+        QVERIFY(collide(prism, Transform{}, prism, xb, 0.01, reference, sat));
+        QCOMPARE(m.pointCount, reference.pointCount);
+        QVERIFY(angleDegrees(m.normal, reference.normal) < 1e-9);
+        for (int i = 0; i < m.pointCount; ++i)
+            QCOMPARE(m.points[i].separation, reference.points[i].separation);
+    }
+
+    // A 1 mm cube on a 1 km box and a 10 cm cube on a 2 mm slab: four points at the right depth.
+    void extremeScales_data() {
+        QTest::addColumn<Vec3>("baseHalf");
+        QTest::addColumn<Real>("cubeHalf");
+        QTest::addColumn<Real>("depth");
+        QTest::newRow("1 mm on 1 km") << Vec3(500.0) << 0.0005 << 0.0001;
+        QTest::newRow("10 cm on 2 mm slab") << Vec3(1.0, 0.001, 1.0) << 0.05 << 0.0005;
+    }
+
+    void extremeScales() {
+        QFETCH(Vec3, baseHalf);
+        QFETCH(Real, cubeHalf);
+        QFETCH(Real, depth);
+        const Shape base = mustShape(makeBox(baseHalf));
+        const Shape cube = mustShape(makeBox(Vec3(cubeHalf)));
+        const Transform xc =
+            Transform::fromQuat(Vec3(0.3, baseHalf.y + cubeHalf - depth, -0.2), axisAngle(Vec3(0, 1, 0), 0.4));
+        for (PolyhedronMethod method : {PolyhedronMethod::Sat, PolyhedronMethod::GjkEpa}) {
+            CollideOptions options;
+            options.method = method;
+            Manifold m;
+            QVERIFY(collide(base, Transform{}, cube, xc, 0.0, m, options));
+            QCOMPARE(m.pointCount, 4);
+            QVERIFY(angleDegrees(m.normal, Vec3(0, 1, 0)) < 0.1);
+            for (int i = 0; i < 4; ++i)
+                QVERIFY(std::abs(m.points[i].separation + depth) < 1e-9);
+        }
     }
 
     void nonFiniteInputGivesNoContact() {

@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <map>
 #include <sstream>
 
 namespace rl {
@@ -257,7 +256,7 @@ std::string xmlEscape(std::string_view text) {
     return out;
 }
 
-std::string format(const char* pattern, auto... args) {
+std::string formatted(const char* pattern, auto... args) {
     char buffer[256];
     std::snprintf(buffer, sizeof buffer, pattern, args...);
     return buffer;
@@ -381,25 +380,25 @@ AccuracyReport runAccuracyStudy(const AccuracyOptions& options) {
 }
 
 std::string formatAccuracyTable(const AccuracyReport& report) {
-    std::string out = format("%-21s %-17s %6s %10s %9s %12s %13s\n", "problem", "integrator", "steps", "dt", "substeps",
-                             "error", "cpu_us");
+    std::string out = formatted("%-21s %-17s %6s %10s %9s %12s %13s\n", "problem", "integrator", "steps", "dt",
+                                "substeps", "error", "cpu_us");
     for (const AccuracyRow& row : report.rows) {
-        out += format("%-21s %-17s %6d %10.6f %9d %12.4e %13.2f\n", row.problem.c_str(),
-                      std::string(integratorName(row.integrator)).c_str(), row.steps, row.dt, row.substeps, row.error,
-                      row.cpuSeconds * 1e6);
+        out += formatted("%-21s %-17s %6d %10.6f %9d %12.4e %13.2f\n", row.problem.c_str(),
+                         std::string(integratorName(row.integrator)).c_str(), row.steps, row.dt, row.substeps,
+                         row.error, row.cpuSeconds * 1e6);
     }
     out += "\nfitted order (least-squares slope of log error over log step; 'exact' = at rounding level)\n";
-    out += format("%-21s", "problem");
+    out += formatted("%-21s", "problem");
     for (Integrator integrator : kIntegrators)
-        out += format(" %17s", std::string(integratorName(integrator)).c_str());
+        out += formatted(" %17s", std::string(integratorName(integrator)).c_str());
     out += "\n";
     for (const std::string& problem : report.problems) {
-        out += format("%-21s", problem.c_str());
+        out += formatted("%-21s", problem.c_str());
         for (Integrator integrator : kIntegrators) {
             for (const AccuracyOrder& order : report.orders) {
                 if (order.problem == problem && order.integrator == integrator) {
-                    out += std::isnan(order.order) ? format(" %17s", "exact")
-                                                   : format(" %11.2f (n=%d)", order.order, order.points);
+                    out += std::isnan(order.order) ? formatted(" %17s", "exact")
+                                                   : formatted(" %11.2f (n=%d)", order.order, order.points);
                 }
             }
         }

@@ -1,0 +1,580 @@
+#include "world/World.h"
+
+#include "collision/Collide.h"
+#include "collision/ContactCache.h"
+#include "collision/Penetration.h"
+#include "scene/BodyProperties.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <thread>
+
+namespace rl {
+
+namespace {
+
+Real maxComponent(const Vec3& v) {
+    return std::max({v.x, v.y, v.z});
+}
+
+// Union-find with path halving; deterministic because unions always keep the smaller index as the root.
+uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t i) {
+    while (parent[i] != i) {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
+
+void unite(std::vector<uint32_t>& parent, uint32_t a, uint32_t b) {
+    a = findRoot(parent, a);
+    b = findRoot(parent, b);
+    if (a == b)
+        return;
+    if (a < b)
+        parent[b] = a;
+    else
+        parent[a] = b;
+}
+
+Quat integrateRotation(const Quat& q, const Vec3& w, Real t) {
+    const Real angle = glm::length(w) * t;
+    if (angle < 1e-12)
+        return q;
+    return glm::normalize(glm::angleAxis(angle, w / glm::length(w)) * q);
+}
+
+} // namespace
+
+Result<World> World::create(const Scene& scene, const WorldOptions& options) {
+    World w;
+    const WorldSettings& ws = scene.world;
+    w.m_fps = options.fps.value_or(ws.fps);
+    w.m_substeps = options.substeps.value_or(ws.substeps);
+    w.m_iterations = options.iterations.value_or(ws.iterations);
+    w.m_integrator = options.integrator.value_or(ws.integrator);
+    w.m_threads = std::clamp(options.threads, 1, 64);
+    auto settingsError = [&](std::string message) {
+        Error e;
+        e.file = scene.sourcePath;
+        e.object = "world";
+        e.message = std::move(message);
+        return e;
+    };
+    if (!(w.m_fps > 0.0) || !std::isfinite(w.m_fps) || w.m_fps > 100000.0)
+        return settingsError("fps must be between 0 and 100000 (is " + std::to_string(w.m_fps) + ")");
+    if (w.m_substeps < 1 || w.m_substeps > 1000)
+        return settingsError("substeps must be between 1 and 1000 (is " + std::to_string(w.m_substeps) + ")");
+    if (w.m_iterations < 1 || w.m_iterations > 1000)
+        return settingsError("iterations must be between 1 and 1000 (is " + std::to_string(w.m_iterations) + ")");
+    const Vec3 g = ws.gravity;
+    if (!std::isfinite(g.x) || !std::isfinite(g.y) || !std::isfinite(g.z))
+        return settingsError("gravity is not a finite vector");
+    w.m_frictionRule = ws.frictionCombine;
+    w.m_restitutionRule = ws.restitutionCombine;
+
+    const size_t n = scene.bodies.size();
+    w.m_state.reserve(static_cast<uint32_t>(n));
+    std::vector<Real> friction(n), restitution(n);
+    std::vector<bool> dynamic(n);
+    SceneFacts facts;
+    Real sceneLow = std::numeric_limits<Real>::max(), sceneHigh = std::numeric_limits<Real>::lowest();
+    const Vec3 down = glm::length(g) > 0.0 ? g / glm::length(g) : Vec3(0.0, -1.0, 0.0);
+    std::vector<Real> initialSpeed(n);
+
+    for (size_t i = 0; i < n; ++i) {
+        const BodyDef& body = scene.bodies[i];
+        Result<BodyProperties> props = computeBodyProperties(scene, body);
+        if (!props) {
+            Error e = props.error();
+            e.file = scene.sourcePath;
+            return e;
+        }
+        const MaterialDef material = scene.effectiveMaterial(body);
+        const Quat orientation = glm::normalize(body.orientation);
+
+        Result<Shape> shape = body.shape.type == ShapeType::Sphere ? makeSphere(body.shape.radius)
+                              : body.shape.type == ShapeType::Box  ? makeBox(body.shape.halfExtents)
+                                                                   : makeHull(props->hull);
+        if (!shape) {
+            Error e = shape.error();
+            e.file = scene.sourcePath;
+            e.object = body.name;
+            return e;
+        }
+
+        BodyInit init;
+        init.centerOfMass = props->com;
+        init.orientation = orientation;
+        init.comInShape = glm::conjugate(orientation) * (props->com - body.position);
+        init.isStatic = body.anchor;
+        init.mass = body.anchor ? 0.0 : props->mass;
+        init.inertia = props->inertia;
+        init.linearVelocity = body.velocity;
+        init.angularVelocity = body.angularVelocity;
+        Result<uint32_t> index = w.m_state.addBody(init);
+        if (!index) {
+            Error e = index.error();
+            e.file = scene.sourcePath;
+            e.object = body.name;
+            return e;
+        }
+
+        w.m_names.push_back(body.name);
+        w.m_shapes.push_back(std::move(shape).value());
+        w.m_friction.push_back(material.friction);
+        w.m_restitution.push_back(material.restitution);
+        w.m_vertexMeanOffset.push_back(props->vertexMean - props->com);
+        w.m_initialShapeOrientation.push_back(orientation);
+        w.m_minExtent.push_back(w.m_shapes.back().minExtent());
+        friction[i] = material.friction;
+        restitution[i] = material.restitution;
+        dynamic[i] = !body.anchor;
+
+        const Aabb box = w.m_shapes.back().worldBounds(w.transform(i));
+        sceneLow = std::min(sceneLow, glm::dot(box.min, -down) < glm::dot(box.max, -down) ? glm::dot(box.min, -down)
+                                                                                          : glm::dot(box.max, -down));
+        sceneHigh = std::max(sceneHigh, std::max(glm::dot(box.min, -down), glm::dot(box.max, -down)));
+        if (!body.anchor) {
+            facts.anyDynamic = true;
+            facts.anyNonSphereDynamic = facts.anyNonSphereDynamic || body.shape.type != ShapeType::Sphere;
+            facts.anySpinning = facts.anySpinning || glm::length(body.angularVelocity) > 0.0;
+            initialSpeed[i] =
+                glm::length(body.velocity) + glm::length(body.angularVelocity) * w.m_shapes.back().boundingRadius();
+        } else {
+            facts.anyAnchor = true;
+        }
+    }
+    facts.frictionPairs = anyPositivePair(w.m_frictionRule, friction, dynamic);
+    facts.restitutionPairs = anyPositivePair(w.m_restitutionRule, restitution, dynamic);
+    // The fastest a body can get by falling the height of the scene: sqrt(2 g H).
+    const Real fallSpeed = n > 0 ? std::sqrt(2.0 * glm::length(g) * std::max(0.0, sceneHigh - sceneLow)) : 0.0;
+    const Real dt = 1.0 / w.m_fps;
+    for (size_t i = 0; i < n; ++i)
+        if (dynamic[i] && (initialSpeed[i] + fallSpeed) * dt > w.m_tuning.ccdFraction * w.m_minExtent[i])
+            facts.fastBodies = true;
+
+    w.m_effects = decideEffects(scene, options.effects.value_or(ws.effects), facts);
+    const ActiveEffects& fx = w.m_effects.effects;
+    w.m_gravity = fx.has(Effect::Gravity) ? g : Vec3(0.0);
+    if (fx.has(Effect::Damping))
+        w.m_damping = Damping{ws.linearDamping, ws.angularDamping};
+    w.m_solverSettings.friction = fx.has(Effect::Friction);
+    w.m_solverSettings.restitution = fx.has(Effect::Restitution);
+
+    w.m_proxies.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const Aabb box = w.m_shapes[i].worldBounds(w.transform(i));
+        Result<ProxyKey> key = w.m_broadPhase.createProxy(
+            box, static_cast<uint32_t>(i),
+            w.m_state.isStatic(static_cast<uint32_t>(i)) ? ProxyKind::Static : ProxyKind::Dynamic);
+        if (!key) {
+            Error e = key.error();
+            e.file = scene.sourcePath;
+            e.object = w.m_names[i];
+            return e;
+        }
+        w.m_proxies[i] = key.value();
+    }
+    w.m_sleepTime.assign(n, 0.0);
+    w.m_island.resize(n);
+    std::iota(w.m_island.begin(), w.m_island.end(), 0u);
+    return w;
+}
+
+Quat World::rotationSinceStart(size_t i) const {
+    return glm::normalize(shapeOrientation(i) * glm::conjugate(m_initialShapeOrientation[i]));
+}
+
+void World::step() {
+    {
+        StageTimer t(m_profile, Stage::UpdateBroadphase);
+        updateBroadphase();
+    }
+    {
+        StageTimer t(m_profile, Stage::FindPairs);
+        findPairs();
+    }
+    {
+        StageTimer t(m_profile, Stage::Narrowphase);
+        narrowphase();
+    }
+    {
+        StageTimer t(m_profile, Stage::BuildIslands);
+        buildIslands();
+    }
+    solve(); // times its own stages: integrate velocities, warm start, solve, integrate positions, relax, restitution
+    if (m_effects.effects.has(Effect::Ccd)) {
+        StageTimer t(m_profile, Stage::Ccd);
+        continuousCollision();
+    }
+    if (m_effects.effects.has(Effect::Sleeping)) {
+        StageTimer t(m_profile, Stage::Sleep);
+        updateSleep();
+    }
+    ++m_frame;
+    m_profile.count(Counter::Steps, 1);
+}
+
+void World::updateBroadphase() {
+    const Real dt = 1.0 / m_fps;
+    for (uint32_t i = 0; i < m_state.size(); ++i) {
+        if (!m_state.isMoving(i))
+            continue;
+        const Aabb box = m_shapes[i].worldBounds(transform(i));
+        // A body that became non-finite is left where its proxy was; the world reports it through diagnostics.
+        (void)m_broadPhase.moveProxy(m_proxies[i], box, m_state.linearVelocity[i] * dt);
+    }
+}
+
+void World::findPairs() {
+    m_broadPhase.updatePairs();
+    const auto pairs = m_broadPhase.pairs();
+    // Merge the sorted pair list with the sorted contact list, keeping the manifolds of pairs that persist.
+    std::vector<Contact> next;
+    next.reserve(pairs.size());
+    size_t old = 0;
+    for (const BroadPhasePair& p : pairs) {
+        while (old < m_contacts.size() &&
+               std::make_pair(m_contacts[old].bodyA, m_contacts[old].bodyB) < std::make_pair(p.idA, p.idB))
+            ++old;
+        if (old < m_contacts.size() && m_contacts[old].bodyA == p.idA && m_contacts[old].bodyB == p.idB) {
+            next.push_back(m_contacts[old]);
+            continue;
+        }
+        Contact c;
+        c.bodyA = p.idA;
+        c.bodyB = p.idB;
+        c.manifold.bodyA = p.idA;
+        c.manifold.bodyB = p.idB;
+        c.friction = combine(m_frictionRule, m_friction[p.idA], m_friction[p.idB]);
+        c.restitution = combine(m_restitutionRule, m_restitution[p.idA], m_restitution[p.idB]);
+        next.push_back(c);
+    }
+    m_contacts = std::move(next);
+    m_profile.count(Counter::Pairs, m_contacts.size());
+}
+
+void World::collidePair(Contact& c) const {
+    const uint32_t a = c.bodyA, b = c.bodyB;
+    const Real dt = 1.0 / m_fps;
+    // Speculative margin: the base distance plus how far the two surfaces can approach within this step, so a
+    // falling body meets its contact before it gets there rather than after it has sunk in.
+    const Vec3 relative = m_state.linearVelocity[b] - m_state.linearVelocity[a];
+    const Real spin = glm::length(m_state.angularVelocity[a]) * m_shapes[a].boundingRadius() +
+                      glm::length(m_state.angularVelocity[b]) * m_shapes[b].boundingRadius();
+    Real margin = m_tuning.speculativeDistance + (glm::length(relative) + spin) * dt;
+    // Beyond the bodies' own size a speculative contact is meaningless; CCD takes over there.
+    margin = std::min(margin, m_tuning.speculativeDistance + std::max(m_minExtent[a], m_minExtent[b]));
+
+    Manifold fresh;
+    fresh.bodyA = a;
+    fresh.bodyB = b;
+    collide(m_shapes[a], transform(a), m_shapes[b], transform(b), margin, fresh);
+    // Points that persist (same features, or nearly the same place) keep their impulses for warm starting.
+    warmStart(c.manifold, fresh);
+    c.manifold = fresh;
+}
+
+void World::narrowphase() {
+    // Pairs where neither body moves keep their manifold (both asleep, or asleep against an anchor).
+    std::vector<uint32_t> active;
+    active.reserve(m_contacts.size());
+    for (uint32_t k = 0; k < m_contacts.size(); ++k)
+        if (m_state.isMoving(m_contacts[k].bodyA) || m_state.isMoving(m_contacts[k].bodyB))
+            active.push_back(k);
+
+    // Each pair writes only its own contact, so splitting the list over threads gives identical results.
+    const int threads = std::min<int>(m_threads, static_cast<int>(active.size() / 64) + 1);
+    if (threads <= 1) {
+        for (uint32_t k : active)
+            collidePair(m_contacts[k]);
+    } else {
+        std::vector<std::thread> workers;
+        const size_t chunk = (active.size() + threads - 1) / threads;
+        for (int t = 0; t < threads; ++t) {
+            const size_t begin = t * chunk, end = std::min(active.size(), begin + chunk);
+            workers.emplace_back([this, &active, begin, end] {
+                for (size_t i = begin; i < end; ++i)
+                    collidePair(m_contacts[active[i]]);
+            });
+        }
+        for (std::thread& worker : workers)
+            worker.join();
+    }
+
+    // A touching contact between an awake body and a sleeping one wakes the sleeper's island.
+    if (m_effects.effects.has(Effect::Sleeping)) {
+        for (const Contact& c : m_contacts) {
+            if (c.manifold.pointCount == 0)
+                continue;
+            const bool movingA = m_state.isMoving(c.bodyA), movingB = m_state.isMoving(c.bodyB);
+            if (movingA && !movingB && !m_state.isStatic(c.bodyB))
+                wakeIsland(c.bodyB);
+            else if (movingB && !movingA && !m_state.isStatic(c.bodyA))
+                wakeIsland(c.bodyA);
+        }
+    }
+    uint64_t manifolds = 0, points = 0;
+    for (const Contact& c : m_contacts) {
+        manifolds += c.manifold.pointCount > 0 ? 1 : 0;
+        points += static_cast<uint64_t>(c.manifold.pointCount);
+    }
+    m_profile.count(Counter::Manifolds, manifolds);
+    m_profile.count(Counter::ContactPoints, points);
+}
+
+void World::wakeIsland(uint32_t body) {
+    const uint32_t root = m_island[body];
+    for (uint32_t i = 0; i < m_state.size(); ++i) {
+        if (m_island[i] == root && !m_state.isStatic(i)) {
+            m_state.flags[i] |= kBodyAwake;
+            m_sleepTime[i] = 0.0;
+        }
+    }
+}
+
+void World::wakeAll() {
+    for (uint32_t i = 0; i < m_state.size(); ++i) {
+        if (!m_state.isStatic(i)) {
+            m_state.flags[i] |= kBodyAwake;
+            m_sleepTime[i] = 0.0;
+        }
+    }
+}
+
+void World::buildIslands() {
+    std::iota(m_island.begin(), m_island.end(), 0u);
+    for (const Contact& c : m_contacts) {
+        if (c.manifold.pointCount == 0 || m_state.isStatic(c.bodyA) || m_state.isStatic(c.bodyB))
+            continue; // anchors do not join islands: a floor would glue the whole scene into one
+        unite(m_island, c.bodyA, c.bodyB);
+    }
+    for (uint32_t i = 0; i < m_island.size(); ++i)
+        m_island[i] = findRoot(m_island, i);
+}
+
+void World::solve() {
+    const Real dt = 1.0 / m_fps;
+    const Real h = dt / m_substeps;
+    const bool rotation = m_effects.effects.has(Effect::Rotation);
+    const uint32_t n = m_state.size();
+
+    // Solver bodies: entry 0 stands for every immovable body (anchors and sleepers); moving bodies follow.
+    std::vector<uint32_t> solverIndex(n, 0);
+    std::vector<uint32_t> moving;
+    for (uint32_t i = 0; i < n; ++i)
+        if (m_state.isMoving(i)) {
+            solverIndex[i] = static_cast<uint32_t>(moving.size() + 1);
+            moving.push_back(i);
+        }
+    m_profile.count(Counter::AwakeBodies, moving.size());
+    std::vector<SolverBody> bodies(moving.size() + 1);
+    std::vector<Vec3> centers(moving.size() + 1, Vec3(0.0));
+    m_stepStartPosition.resize(n);
+    m_stepStartOrientation.resize(n);
+    for (size_t k = 0; k < moving.size(); ++k) {
+        const uint32_t i = moving[k];
+        SolverBody& b = bodies[k + 1];
+        b.invMass = m_state.invMass[i];
+        // Linear-only mode: the solver must not spin bodies either.
+        b.invInertia = rotation ? m_state.worldInverseInertia(i) : Mat3(0.0);
+        centers[k + 1] = m_state.position[i];
+        m_stepStartPosition[i] = m_state.position[i];
+        m_stepStartOrientation[i] = m_state.orientation[i];
+    }
+
+    // Contacts the solver sees: touching manifolds with at least one moving body.
+    std::vector<uint32_t> activeContacts;
+    std::vector<Manifold> manifolds;
+    std::vector<uint32_t> indexA, indexB;
+    std::vector<Real> friction, restitution;
+    for (uint32_t k = 0; k < m_contacts.size(); ++k) {
+        const Contact& c = m_contacts[k];
+        if (c.manifold.pointCount == 0 || (!m_state.isMoving(c.bodyA) && !m_state.isMoving(c.bodyB)))
+            continue;
+        activeContacts.push_back(k);
+        manifolds.push_back(c.manifold);
+        indexA.push_back(solverIndex[c.bodyA]);
+        indexB.push_back(solverIndex[c.bodyB]);
+        friction.push_back(c.friction);
+        restitution.push_back(c.restitution);
+    }
+    m_solver.resetCounters();
+    m_solver.prepare(manifolds, indexA, indexB, friction, restitution, bodies, centers, h, m_solverSettings);
+
+    auto toSolver = [&] {
+        for (size_t k = 0; k < moving.size(); ++k) {
+            bodies[k + 1].v = m_state.linearVelocity[moving[k]];
+            bodies[k + 1].w = rotation ? m_state.angularVelocity[moving[k]] : Vec3(0.0);
+        }
+    };
+    auto fromSolver = [&] {
+        for (size_t k = 0; k < moving.size(); ++k) {
+            m_state.linearVelocity[moving[k]] = bodies[k + 1].v;
+            if (rotation)
+                m_state.angularVelocity[moving[k]] = bodies[k + 1].w;
+        }
+    };
+    const BodyRange all = allBodies(m_state);
+    for (int s = 0; s < m_substeps; ++s) {
+        {
+            StageTimer t(m_profile, Stage::IntegrateVelocities);
+            integrateVelocities(m_state, all, h, m_gravity, m_damping, m_integrator, rotation);
+            m_profile.count(Counter::IntegratedBodies, moving.size());
+        }
+        toSolver();
+        {
+            StageTimer t(m_profile, Stage::WarmStart);
+            m_solver.warmStart(bodies);
+        }
+        {
+            StageTimer t(m_profile, Stage::Solve);
+            for (int it = 0; it < m_iterations; ++it)
+                m_solver.solve(bodies, true);
+        }
+        fromSolver();
+        {
+            StageTimer t(m_profile, Stage::IntegratePositions);
+            integratePositions(m_state, all, h, m_gravity, m_damping, m_integrator, rotation);
+            for (size_t k = 0; k < moving.size(); ++k) {
+                const uint32_t i = moving[k];
+                bodies[k + 1].dp = m_state.position[i] - m_stepStartPosition[i];
+                bodies[k + 1].dq = glm::normalize(m_state.orientation[i] * glm::conjugate(m_stepStartOrientation[i]));
+            }
+        }
+        toSolver();
+        {
+            StageTimer t(m_profile, Stage::Relax);
+            for (int it = 0; it < m_iterations; ++it)
+                m_solver.solve(bodies, false);
+        }
+        fromSolver();
+    }
+    if (m_solverSettings.restitution) {
+        StageTimer t(m_profile, Stage::Restitution);
+        toSolver();
+        m_solver.applyRestitution(bodies);
+        fromSolver();
+    }
+    m_solver.storeImpulses(manifolds);
+    for (size_t k = 0; k < activeContacts.size(); ++k)
+        m_contacts[activeContacts[k]].manifold = manifolds[k];
+    const ContactSolverCounters& sc = m_solver.counters();
+    m_profile.count(Counter::NormalRows, sc.normalRows);
+    m_profile.count(Counter::FrictionRows, sc.frictionRows);
+    m_profile.count(Counter::RestitutionRows, sc.restitutionRows);
+}
+
+void World::continuousCollision() {
+    // Fast bodies are swept against the anchors by conservative advancement on the signed distance: the body is moved
+    // back to its first time of impact, where next step's speculative contact stops it. Dynamic-versus-dynamic
+    // tunnelling is left to the speculative margin.
+    const Real dt = 1.0 / m_fps;
+    const Real target = 0.25 * m_tuning.speculativeDistance;
+    for (uint32_t i = 0; i < m_state.size(); ++i) {
+        if (!m_state.isMoving(i))
+            continue;
+        const Vec3 start = m_stepStartPosition[i];
+        const Vec3 end = m_state.position[i];
+        const Vec3 delta = end - start;
+        const Quat q0 = m_stepStartOrientation[i];
+        const Quat q1 = m_state.orientation[i];
+        const Real angle = 2.0 * std::acos(std::clamp(std::abs(glm::dot(q0, q1)), 0.0, 1.0));
+        const Real radius = m_shapes[i].boundingRadius() + glm::length(m_state.position[i] - transform(i).position);
+        const Real sweep = glm::length(delta) + angle * radius;
+        if (sweep <= m_tuning.ccdFraction * m_minExtent[i])
+            continue;
+        m_profile.count(Counter::CcdBodies, 1);
+
+        // Candidate anchors: the static tree over the swept box.
+        const Quat shapeFromPrincipal = m_state.info[i].shapeFromPrincipal;
+        const Vec3 comInShape = m_state.info[i].comInShape;
+        auto poseAt = [&](Real t) {
+            const Quat q = glm::slerp(q0, q1, t);
+            const Quat shapeQ = q * shapeFromPrincipal;
+            const Vec3 com = start + delta * t;
+            return Transform::fromQuat(com - shapeQ * comInShape, shapeQ);
+        };
+        Aabb swept = m_shapes[i].worldBounds(poseAt(0.0));
+        const Aabb endBox = m_shapes[i].worldBounds(poseAt(1.0));
+        swept.min = glm::min(swept.min, endBox.min);
+        swept.max = glm::max(swept.max, endBox.max);
+        Real toi = 1.0;
+        m_broadPhase.tree(ProxyKind::Static).query(swept, [&](int32_t proxy) {
+            const uint32_t j = m_broadPhase.tree(ProxyKind::Static).userId(proxy);
+            const Transform xfB = transform(j);
+            // Already touching at the start: the contact solver owns this pair.
+            if (signedDistance(m_shapes[i], poseAt(0.0), m_shapes[j], xfB).separation < target)
+                return true;
+            Real t = 0.0;
+            for (int iteration = 0; iteration < 40 && t < toi; ++iteration) {
+                const Real d = signedDistance(m_shapes[i], poseAt(t), m_shapes[j], xfB).separation;
+                if (d < 2.0 * target) {
+                    toi = std::min(toi, t);
+                    break;
+                }
+                // No point of the body approaches faster than `sweep` per unit of t.
+                t += (d - target) / sweep;
+            }
+            return true;
+        });
+        if (toi < 1.0) {
+            m_state.position[i] = start + delta * toi;
+            m_state.orientation[i] = glm::normalize(glm::slerp(q0, q1, toi));
+            m_profile.count(Counter::CcdHits, 1);
+        }
+        (void)dt;
+    }
+}
+
+void World::updateSleep() {
+    const Real dt = 1.0 / m_fps;
+    const uint32_t n = m_state.size();
+    std::vector<Real> islandMin(n, std::numeric_limits<Real>::max());
+    for (uint32_t i = 0; i < n; ++i) {
+        if (m_state.isStatic(i))
+            continue;
+        if (m_state.isAwake(i)) {
+            const bool slow = glm::length(m_state.linearVelocity[i]) < m_tuning.sleepLinearSpeed &&
+                              glm::length(m_state.angularVelocity[i]) < m_tuning.sleepAngularSpeed;
+            m_sleepTime[i] = slow ? m_sleepTime[i] + dt : 0.0;
+        }
+        islandMin[m_island[i]] = std::min(islandMin[m_island[i]], m_state.isAwake(i) ? m_sleepTime[i] : 1e30);
+    }
+    for (uint32_t i = 0; i < n; ++i) {
+        if (m_state.isStatic(i) || !m_state.isAwake(i) || islandMin[m_island[i]] < m_tuning.timeToSleep)
+            continue;
+        m_state.flags[i] &= static_cast<uint8_t>(~kBodyAwake);
+        m_state.linearVelocity[i] = Vec3(0.0);
+        m_state.angularVelocity[i] = Vec3(0.0);
+    }
+}
+
+FrameDiagnostics World::diagnostics() const {
+    FrameDiagnostics d;
+    for (uint32_t i = 0; i < m_state.size(); ++i) {
+        if (m_state.isStatic(i))
+            continue;
+        d.kineticEnergy += m_state.kineticEnergy(i);
+        d.potentialEnergy -= m_state.info[i].mass * glm::dot(m_gravity, m_state.position[i]);
+        d.awakeBodies += m_state.isAwake(i) ? 1 : 0;
+    }
+    for (const Contact& c : m_contacts)
+        for (int k = 0; k < c.manifold.pointCount; ++k) {
+            d.maxPenetration = std::max(d.maxPenetration, -c.manifold.points[k].separation);
+            d.contactPoints += c.manifold.points[k].separation <= 0.0 ? 1 : 0;
+        }
+    return d;
+}
+
+std::vector<Manifold> World::manifolds() const {
+    std::vector<Manifold> out;
+    for (const Contact& c : m_contacts)
+        if (c.manifold.pointCount > 0)
+            out.push_back(c.manifold);
+    return out;
+}
+
+} // namespace rl

@@ -25,7 +25,9 @@ Error bodyError(const std::string& message) {
 } // namespace
 
 void BodyState::clear() {
+    const SpeedLimits keep = limits;
     *this = BodyState{};
+    limits = keep;
 }
 
 void BodyState::reserve(uint32_t n) {

@@ -92,7 +92,7 @@ struct BodyState {
     ClampCounters clampCounters;
 
     uint32_t size() const { return static_cast<uint32_t>(position.size()); }
-    void clear();
+    void clear(); // removes every body and resets the clamp counters; the limits are settings and stay
     void reserve(uint32_t n);
 
     // Validates the definition (finite numbers, positive mass, positive-definite inertia satisfying the triangle

@@ -66,6 +66,8 @@ struct Damping {
 };
 
 // ---- The substep phases for bodies (only awake, non-static bodies in the range are touched) ----
+// Disjoint ranges touch disjoint array elements, except BodyState::clampCounters, which every call may increment: run
+// ranges of one state on several threads only with the clamp counters made per thread first.
 
 // Applies gravity, damping and (when rotationEnabled) the gyroscopic term over dt, records the smooth motion, and
 // applies BodyState::limits, counting in BodyState::clampCounters. When rotation is disabled (the original project's

@@ -173,6 +173,12 @@ void TestIntegrators::speedClamp() {
     // Clamped once, it stays at the limit without being counted again.
     integrateSmooth(state, allBodies(state), dt, Vec3(0.0), Damping{}, integrator, true);
     QCOMPARE(state.clampCounters.linear, uint64_t(1));
+    // Limits are settings: clear() keeps them and resets the counters.
+    state.limits.maxLinearSpeed = 50.0;
+    state.clear();
+    QCOMPARE(state.size(), 0u);
+    QCOMPARE(state.limits.maxLinearSpeed, 50.0);
+    QCOMPARE(state.clampCounters, ClampCounters{});
 }
 
 void TestIntegrators::clampCatchesNonFiniteVelocity() {

@@ -326,8 +326,11 @@ Result<Bake> readBake(std::string_view text, const std::string& fileName, BakeFi
     if (header.version > 0) {
         // Checked before anything is sized from the header, so a hostile header cannot make us allocate.
         const uint64_t expected = static_cast<uint64_t>(header.frames) * static_cast<uint64_t>(header.bodies);
-        if (header.frames == 0 && header.bodies > 0)
-            return fail(1, "the header says 0 frames; a bake has at least frame 0");
+        // Both at least 1: a bake has frame 0, and a bake without bodies has nothing to replay (and would let a
+        // header of two billion empty frames cost minutes).
+        if (header.frames == 0 || header.bodies == 0)
+            return fail(1, "the header says " + std::to_string(header.frames) + " frames of " +
+                               std::to_string(header.bodies) + " bodies; a bake has at least one of each");
         if (expected != records)
             return fail(lastLine, "the header says " + std::to_string(header.frames) + " frames of " +
                                       std::to_string(header.bodies) + " bodies (" + std::to_string(expected) +

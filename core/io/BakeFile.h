@@ -16,7 +16,8 @@ inline constexpr int kBakeFormatVersion = 2;
 // header to say so.
 inline constexpr double kLegacyBakeFps = 200.0;
 
-// Streams the bake in our format; numbers are shortest round-trip floats. Positions are vertex means.
+// Streams the bake in our format; numbers are shortest round-trip floats. Positions are vertex means. The reader
+// wants at least one body and one frame, so a Baker refuses an empty scene rather than writing such a file.
 void writeBake(const Bake& bake, std::ostream& out);
 // Atomic: a failed write leaves an existing file untouched.
 Status writeBakeFile(const Bake& bake, const std::string& path);

@@ -20,19 +20,20 @@ public:
     using Array = std::vector<JsonValue>;
     using Object = std::vector<JsonMember>; // in document order; keys are unique after parsing
 
-    JsonValue() = default;
-    JsonValue(std::nullptr_t) {}
-    JsonValue(bool value) : m_data(value) {}
-    JsonValue(double value) : m_data(value) {}
-    JsonValue(int value) : m_data(static_cast<double>(value)) {}
-    JsonValue(std::string value) : m_data(std::move(value)) {}
-    JsonValue(std::string_view value) : m_data(std::string(value)) {}
-    JsonValue(const char* value) : m_data(std::string(value)) {}
-    JsonValue(Array value) : m_data(std::move(value)) {}
-    JsonValue(Object value) : m_data(std::move(value)) {}
+    // Defined below JsonMember: clang instantiates the variant's members here, where JsonMember is incomplete.
+    JsonValue();
+    JsonValue(std::nullptr_t);
+    JsonValue(bool value);
+    JsonValue(double value);
+    JsonValue(int value);
+    JsonValue(std::string value);
+    JsonValue(std::string_view value);
+    JsonValue(const char* value);
+    JsonValue(Array value);
+    JsonValue(Object value);
 
-    static JsonValue array() { return JsonValue(Array{}); }
-    static JsonValue object() { return JsonValue(Object{}); }
+    static JsonValue array();
+    static JsonValue object();
 
     Type type() const { return static_cast<Type>(m_data.index()); }
     bool isNull() const { return type() == Type::Null; }
@@ -67,7 +68,7 @@ public:
     }
 
     // Structural equality; positions are ignored.
-    bool operator==(const JsonValue& other) const { return m_data == other.m_data; }
+    bool operator==(const JsonValue& other) const;
 
 private:
     std::variant<std::nullptr_t, bool, double, std::string, Array, Object> m_data;
@@ -80,6 +81,26 @@ struct JsonMember {
     JsonValue value;
     bool operator==(const JsonMember&) const = default;
 };
+
+inline JsonValue::JsonValue() = default;
+inline JsonValue::JsonValue(std::nullptr_t) {}
+inline JsonValue::JsonValue(bool value) : m_data(value) {}
+inline JsonValue::JsonValue(double value) : m_data(value) {}
+inline JsonValue::JsonValue(int value) : m_data(static_cast<double>(value)) {}
+inline JsonValue::JsonValue(std::string value) : m_data(std::move(value)) {}
+inline JsonValue::JsonValue(std::string_view value) : m_data(std::string(value)) {}
+inline JsonValue::JsonValue(const char* value) : m_data(std::string(value)) {}
+inline JsonValue::JsonValue(Array value) : m_data(std::move(value)) {}
+inline JsonValue::JsonValue(Object value) : m_data(std::move(value)) {}
+inline JsonValue JsonValue::array() {
+    return JsonValue(Array{});
+}
+inline JsonValue JsonValue::object() {
+    return JsonValue(Object{});
+}
+inline bool JsonValue::operator==(const JsonValue& other) const {
+    return m_data == other.m_data;
+}
 
 std::string_view jsonTypeName(JsonValue::Type type); // "null", "boolean", "number", "string", "array", "object"
 

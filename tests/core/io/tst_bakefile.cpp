@@ -217,6 +217,8 @@ private slots:
         QTest::newRow("truncated after header") << header << 2 << "truncated";
         QTest::newRow("missing frame") << header + "0 0 0 0 1 0 0 0\n1 0 0 0 1 0 0 0\n0 0 0 0 1 0 0 0\n"
                                        << 5 << "truncated";
+        QTest::newRow("no bodies") << std::string("# rigidlab-bake 2 fps=60 frames=2000000000 bodies=0\n!\n") << 1
+                                   << "at least one of each";
         QTest::newRow("huge header counts")
             << std::string("# rigidlab-bake 2 fps=60 frames=2000000000 bodies=2000000000\n!\n0 0 0 0 1 0 0 0\n") << 3
             << "truncated";

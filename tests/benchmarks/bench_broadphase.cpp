@@ -176,22 +176,33 @@ Figures runBullet(int n, int steps) {
 } // namespace
 
 int main(int argc, char** argv) {
-    // --quick runs fewer steps, for a smoke run.
+    // --quick runs fewer steps once, for a smoke run.
     const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
     const int steps = quick ? 20 : 200;
-    std::printf("# bench_broadphase: random walk at 60 Hz, 1 body per 8 m^3, 5%% anchors, median of %d updates, thread "
-                "CPU time\n",
-                steps);
+    const int repeats = quick ? 1 : 3;
+    // The same deterministic run is repeated and the fastest median kept: on a shared machine the slower repeats
+    // measure the neighbours, not the code.
+    auto best = [&](auto run) {
+        Figures f = run();
+        for (int r = 1; r < repeats; ++r) {
+            const Figures g = run();
+            if (g.msMedian < f.msMedian)
+                f = g;
+        }
+        return f;
+    };
+    std::printf("# bench_broadphase: random walk at 60 Hz, 1 body per 8 m^3, 5%% anchors\n");
+    std::printf("# median of %d updates in thread CPU time, best of %d runs\n", steps, repeats);
     std::printf("# update = moveProxy for every dynamic body + updatePairs; ns/nlogn = update time / (n log2 n)\n");
     std::printf("%-10s %7s %10s %10s %10s %10s %8s %8s %10s\n", "impl", "n", "ms/update", "ms/move", "pairs",
                 "reinserts", "height", "area", "ns/nlogn");
     for (int n : {1000, 4000, 16000}) {
-        const Figures f = runRigidLab(n, steps, BroadPhaseSettings{});
+        const Figures f = best([&] { return runRigidLab(n, steps, BroadPhaseSettings{}); });
         const double nlogn = n * std::log2(static_cast<double>(n));
         std::printf("%-10s %7d %10.3f %10.3f %10.0f %10.0f %8d %8.1f %10.2f\n", "rigidlab", n, f.msMedian,
                     f.msMoveMedian, f.pairs, f.reinsertedPerStep, f.height, f.areaRatio, f.msMedian * 1e6 / nlogn);
 #ifdef RL_HAVE_BULLET
-        const Figures b = runBullet(n, steps);
+        const Figures b = best([&] { return runBullet(n, steps); });
         std::printf("%-10s %7d %10.3f %10s %10.0f %10s %8s %8s %10.2f\n", "bullet", n, b.msMedian, "-", b.pairs, "-",
                     "-", "-", b.msMedian * 1e6 / nlogn);
 #endif
@@ -205,7 +216,7 @@ int main(int argc, char** argv) {
             BroadPhaseSettings s;
             s.dynamicTree.margin = margin;
             s.dynamicTree.displacementMultiplier = multiplier;
-            const Figures f = runRigidLab(4000, steps / 2, s);
+            const Figures f = best([&] { return runRigidLab(4000, steps / 2, s); });
             std::printf("%8.2f %8.1f %10.3f %10.0f %10.0f\n", margin, multiplier, f.msMedian, f.pairs,
                         f.reinsertedPerStep);
         }

@@ -31,7 +31,7 @@ Vec3 gyroscopicImplicit(const Vec3& bodyOmega, const Vec3& inertia, Real dt);
 // E1 = E0. So it is stable at any step like Catto's step, without its dissipation, and second order.
 // Used by symplectic-euler.
 Vec3 gyroscopicMidpoint(const Vec3& bodyOmega, const Vec3& inertia, Real dt);
-inline constexpr int kMidpointMaxIterations = 8; // Newton converges quadratically; 2-3 iterations at clamp-sized steps
+inline constexpr int kMidpointMaxIterations = 8; // a bound only: Newton converges quadratically from w0
 
 // One classical RK4 step of the coupled system q' = q (0, w)/2, w' = eulerAngularAcceleration(w) - damping w, with w in
 // the body frame. Fourth order in both; the quaternion is renormalised at the end (RK4 does not keep |q| = 1).

@@ -186,7 +186,8 @@ void DynamicTree::shrinkUpwards(int32_t index) {
     }
 }
 
-// Walks to the root: the path is at most the tree height long, and each node is refitted after its children.
+// After an insertion the ancestors can only grow. Each is refitted after its children and then rotated; the walk
+// stops at the first one that comes out unchanged, so it is at most the tree height long and usually much shorter.
 void DynamicTree::refitUpwards(int32_t index) {
     while (index != kNullNode) {
         Node& node = m_nodes[index];

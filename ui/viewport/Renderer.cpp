@@ -76,8 +76,15 @@ bool Renderer::initialize() {
     m_backgroundProgram = buildProgram(":/shaders/background.vert", ":/shaders/background.frag");
     m_gridProgram = buildProgram(":/shaders/grid.vert", ":/shaders/grid.frag");
     m_overlayProgram = buildProgram(":/shaders/overlay.vert", ":/shaders/overlay.frag");
-    if (!m_meshProgram || !m_outlineProgram || !m_backgroundProgram || !m_gridProgram || !m_overlayProgram)
+    if (!m_meshProgram || !m_outlineProgram || !m_backgroundProgram || !m_gridProgram || !m_overlayProgram) {
+        // Leave nothing half-built: the widget then shows nothing rather than drawing with missing programs.
+        m_meshProgram.reset();
+        m_outlineProgram.reset();
+        m_backgroundProgram.reset();
+        m_gridProgram.reset();
+        m_overlayProgram.reset();
         return false;
+    }
     glGenVertexArrays(1, &m_emptyVao);
     glGenBuffers(1, &m_instanceBuffer);
     m_instanceBufferCapacity = 0;

@@ -36,6 +36,7 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
         format.setVersion(3, 3);
         format.setProfile(QSurfaceFormat::CoreProfile);
     }
+    format.setSamples(0);
     setFormat(format);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
@@ -167,6 +168,12 @@ void Viewport::frameSelection() {
     }
     m_camera.frame(selected);
     cameraMoved();
+}
+
+void Viewport::setSamples(int samples) {
+    QSurfaceFormat f = format();
+    f.setSamples(samples);
+    setFormat(f);
 }
 
 void Viewport::setRenderOptions(const RenderOptions& options) {

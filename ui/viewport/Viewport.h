@@ -39,6 +39,11 @@ public:
     // Replaces one instance's colour and flags (sleeping, hidden, anchor) without touching the meshes.
     void setInstanceAppearance(int instance, const glm::vec3& colour, uint32_t flags);
 
+    // Multisampling of the viewport's framebuffer; takes effect only before the widget is first shown. The default
+    // is 0 whatever the application's default format says: under llvmpipe 4x MSAA multiplies the CPU cost of a frame
+    // (see the report in tests/ui/viewport/tst_viewport.cpp).
+    void setSamples(int samples);
+
     // Without a pick function, clicks pick by the instances' world boxes (ViewportScene::pickBounds).
     void setPickFunction(PickFunction pick) { m_pick = std::move(pick); }
 

@@ -151,19 +151,6 @@ Result<Header> parseHeader(std::string_view line, const std::string& fileName) {
     return h;
 }
 
-// Names of the OBJ part's `o` statements, in order.
-std::vector<std::string> objObjectNames(std::string_view objText) {
-    std::vector<std::string> names;
-    LineCursor cursor(objText);
-    std::string_view line;
-    while (cursor.next(line)) {
-        line = trim(line);
-        if (line.size() >= 2 && line[0] == 'o' && isBlank(line[1]))
-            names.emplace_back(trim(line.substr(2)));
-    }
-    return names;
-}
-
 void appendLegacyNumber(std::string& out, float value) {
     // %g without printf: printf follows the C locale, which a Qt application sets from the environment, and a
     // German desktop would then write decimal commas.
@@ -367,12 +354,16 @@ Result<Bake> readBake(std::string_view text, const std::string& fileName, BakeFi
     }
 
     std::vector<BakeBodyInfo> infos(bodyCount);
-    const std::vector<std::string> names = objObjectNames(objText);
-    if (names.size() == bodyCount)
-        for (size_t b = 0; b < bodyCount; ++b) {
-            infos[b].name = names[b];
-            infos[b].anchor = isAnchorName(names[b]);
-        }
+    // Names and anchors as the importer sees the OBJ part. The frames stand on their own, so an OBJ part that does
+    // not parse, or has another number of objects, only costs the names.
+    if (!objText.empty()) {
+        const Result<ObjFile> obj = readObj(objText, fileName);
+        if (obj && obj->objects.size() == bodyCount)
+            for (size_t b = 0; b < bodyCount; ++b) {
+                infos[b].name = obj->objects[b].name;
+                infos[b].anchor = isAnchorName(infos[b].name);
+            }
+    }
     Bake bake(std::move(infos), header.fps);
     bake.setSceneObjText(std::string(objText));
     bake.setHasVelocities(false);

@@ -38,9 +38,9 @@ struct BakeFileInfo {
 // Reads either flavour. A line's frame is how many earlier lines had the same id, so frame-major, object-major
 // and any other per-body-chronological order all load; `info` says which order was found. Lines starting with
 // '#' and blank lines are skipped, CR before LF is dropped, columns beyond those used are ignored. Positions are
-// the vertex means; body offsets are 0 and velocities unknown. Names come from the OBJ part's `o` lines when their
-// count matches. Errors name the file and the line: bad id, short line, non-numeric value, inconsistent frame
-// counts, a truncated or empty file, a newer version.
+// the vertex means; body offsets are 0 and velocities unknown. Names and anchors come from the OBJ part when it parses
+// and has one object per body. Errors name the file and the line: bad id, short line, non-numeric value, inconsistent
+// frame counts, a truncated or empty file, a newer version.
 Result<Bake> readBake(std::string_view text, const std::string& fileName, BakeFileInfo* info = nullptr);
 Result<Bake> readBakeFile(const std::string& path, BakeFileInfo* info = nullptr);
 

@@ -191,6 +191,17 @@ private slots:
         QVERIFY(bake->rotation(1, 1) == glm::quat(0, 0, 1, 0));
     }
 
+    // The OBJ part only supplies names: a broken one costs the names, not the frames.
+    void brokenObjPartKeepsFrames() {
+        const std::string text = "o Lost\nf 1 2 3\n!\n0 1 2 3\n0 1 2 4\n";
+        Result<Bake> bake = readBake(text, "noobj.bake");
+        QVERIFY(bake.ok());
+        QCOMPARE(bake->frameCount(), size_t(2));
+        QCOMPARE(bake->body(0).name, std::string());
+        QCOMPARE(bake->sceneObjText(), std::string("o Lost\nf 1 2 3\n"));
+        QCOMPARE(bake->position(1, 0).z, 4.0f);
+    }
+
     void badFiles_data() {
         QTest::addColumn<std::string>("text");
         QTest::addColumn<int>("line");

@@ -34,6 +34,7 @@ struct Entry {
 
 const Entry kCommands[] = {
     {"info", rl::cli::runInfo, "bodies, anchors, materials, volume, mass, centre of mass, inertia, warnings"},
+    {"bake", rl::cli::runBake, "simulate a scene and write .bake and/or CSV"},
     {"export", rl::cli::runExport, "convert a .bake to CSV or to a .bake in the current format"},
 };
 

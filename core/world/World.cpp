@@ -128,6 +128,12 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
         w.m_vertexMeanOffset.push_back(props->vertexMean - props->com);
         w.m_initialShapeOrientation.push_back(orientation);
         w.m_minExtent.push_back(w.m_shapes.back().minExtent());
+        // Radius about the centre of mass: how fast a spinning body's surface can move. (The shape's own bounding
+        // radius is about the shape origin, which for an OBJ object is the file's origin, far from the body.)
+        Real radius = body.shape.type == ShapeType::Sphere ? body.shape.radius : 0.0;
+        for (const Vec3& v : props->hull.vertices)
+            radius = std::max(radius, glm::length(v - init.comInShape));
+        w.m_radius.push_back(radius);
         friction[i] = material.friction;
         restitution[i] = material.restitution;
         dynamic[i] = !body.anchor;
@@ -140,8 +146,7 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
             facts.anyDynamic = true;
             facts.anyNonSphereDynamic = facts.anyNonSphereDynamic || body.shape.type != ShapeType::Sphere;
             facts.anySpinning = facts.anySpinning || glm::length(body.angularVelocity) > 0.0;
-            initialSpeed[i] =
-                glm::length(body.velocity) + glm::length(body.angularVelocity) * w.m_shapes.back().boundingRadius();
+            initialSpeed[i] = glm::length(body.velocity) + glm::length(body.angularVelocity) * w.m_radius.back();
         } else {
             facts.anyAnchor = true;
         }
@@ -262,8 +267,8 @@ void World::collidePair(Contact& c) const {
     // Speculative margin: the base distance plus how far the two surfaces can approach within this step, so a
     // falling body meets its contact before it gets there rather than after it has sunk in.
     const Vec3 relative = m_state.linearVelocity[b] - m_state.linearVelocity[a];
-    const Real spin = glm::length(m_state.angularVelocity[a]) * m_shapes[a].boundingRadius() +
-                      glm::length(m_state.angularVelocity[b]) * m_shapes[b].boundingRadius();
+    const Real spin =
+        glm::length(m_state.angularVelocity[a]) * m_radius[a] + glm::length(m_state.angularVelocity[b]) * m_radius[b];
     Real margin = m_tuning.speculativeDistance + (glm::length(relative) + spin) * dt;
     // Beyond the bodies' own size a speculative contact is meaningless; CCD takes over there.
     margin = std::min(margin, m_tuning.speculativeDistance + std::max(m_minExtent[a], m_minExtent[b]));
@@ -471,7 +476,6 @@ void World::continuousCollision() {
     // Fast bodies are swept against the anchors by conservative advancement on the signed distance: the body is moved
     // back to its first time of impact, where next step's speculative contact stops it. Dynamic-versus-dynamic
     // tunnelling is left to the speculative margin.
-    const Real dt = 1.0 / m_fps;
     const Real target = 0.25 * m_tuning.speculativeDistance;
     for (uint32_t i = 0; i < m_state.size(); ++i) {
         if (!m_state.isMoving(i))
@@ -482,8 +486,7 @@ void World::continuousCollision() {
         const Quat q0 = m_stepStartOrientation[i];
         const Quat q1 = m_state.orientation[i];
         const Real angle = 2.0 * std::acos(std::clamp(std::abs(glm::dot(q0, q1)), 0.0, 1.0));
-        const Real radius = m_shapes[i].boundingRadius() + glm::length(m_state.position[i] - transform(i).position);
-        const Real sweep = glm::length(delta) + angle * radius;
+        const Real sweep = glm::length(delta) + angle * m_radius[i];
         if (sweep <= m_tuning.ccdFraction * m_minExtent[i])
             continue;
         m_profile.count(Counter::CcdBodies, 1);
@@ -505,18 +508,19 @@ void World::continuousCollision() {
         m_broadPhase.tree(ProxyKind::Static).query(swept, [&](int32_t proxy) {
             const uint32_t j = m_broadPhase.tree(ProxyKind::Static).userId(proxy);
             const Transform xfB = transform(j);
-            // Already touching at the start: the contact solver owns this pair.
-            if (signedDistance(m_shapes[i], poseAt(0.0), m_shapes[j], xfB).separation < target)
+            // Already close at the start: the speculative contact and the solver own this pair.
+            if (signedDistance(m_shapes[i], poseAt(0.0), m_shapes[j], xfB).separation < 2.0 * target)
                 return true;
             Real t = 0.0;
             for (int iteration = 0; iteration < 40 && t < toi; ++iteration) {
                 const Real d = signedDistance(m_shapes[i], poseAt(t), m_shapes[j], xfB).separation;
-                if (d < 2.0 * target) {
+                if (d < target) {
                     toi = std::min(toi, t);
                     break;
                 }
-                // No point of the body approaches faster than `sweep` per unit of t.
-                t += (d - target) / sweep;
+                // No point of the body approaches faster than `sweep` per unit of t, so this step cannot skip
+                // past the first contact.
+                t += (d - 0.5 * target) / sweep;
             }
             return true;
         });
@@ -525,7 +529,6 @@ void World::continuousCollision() {
             m_state.orientation[i] = glm::normalize(glm::slerp(q0, q1, toi));
             m_profile.count(Counter::CcdHits, 1);
         }
-        (void)dt;
     }
 }
 

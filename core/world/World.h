@@ -147,6 +147,7 @@ private:
     std::vector<ProxyKey> m_proxies;
     std::vector<Real> m_sleepTime;
     std::vector<Real> m_minExtent;
+    std::vector<Real> m_radius; // largest distance from the centre of mass to the surface
     CombineRule m_frictionRule = CombineRule::GeometricMean;
     CombineRule m_restitutionRule = CombineRule::Max;
 

@@ -174,6 +174,60 @@ private slots:
         QVERIFY(!QFile::exists(dir.filePath("out.csv"))); // nothing half-written
     }
 
+    void bakeWritesBakeCsvAndProfile() {
+        QTemporaryDir dir;
+        const QString bake = dir.filePath("stack.bake"), csv = dir.filePath("stack.csv");
+        const Run r = runCli(
+            {"bake", scenePath("stack.obj"), "-o", bake, "--csv", csv, "--frames", "30", "--profile", "--quiet"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        // --profile: one line per stage, the active effects, and counters.
+        const QList<QByteArray> lines = r.out.trimmed().split('\n');
+        int stages = 0, counters = 0, effects = 0;
+        for (const QByteArray& line : lines) {
+            stages += line.startsWith("stage=") && line.contains(" ms=") && line.contains(" calls=") ? 1 : 0;
+            counters += line.startsWith("counter=") && line.contains(" value=") ? 1 : 0;
+            effects += line.startsWith("effects=") ? 1 : 0;
+        }
+        QCOMPARE(stages, 13);
+        QCOMPARE(effects, 1);
+        QVERIFY(counters >= 10);
+        QVERIFY(r.out.contains("effects=gravity,rotation,friction,restitution,sleeping"));
+
+        // The .bake: header, the source OBJ verbatim, '!', then 31 frames x 11 bodies; frame 0 = vertex means.
+        QFile f(bake);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray text = f.readAll();
+        QVERIFY(text.startsWith("# rigidlab-bake 2 fps=60 frames=31 bodies=11 columns=id,x,y,z,qw,qx,qy,qz\n"));
+        QFile source(scenePath("stack.obj"));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QVERIFY(text.contains(source.readAll()));
+        const QByteArray data = text.mid(text.indexOf("\n!\n") + 3);
+        const QList<QByteArray> rows = data.trimmed().split('\n');
+        QCOMPARE(rows.size(), 31 * 11);
+        const QList<QByteArray> top = rows[10].split(' '); // frame 0, body 10: the top cube, spanning y 9..10
+        QCOMPARE(top[0], QByteArray("10"));
+        QCOMPARE(top[2].toDouble(), 9.5);
+        QCOMPARE(top[4], QByteArray("1"));
+
+        QFile c(csv);
+        QVERIFY(c.open(QIODevice::ReadOnly));
+        QCOMPARE(c.readAll().trimmed().split('\n').size(), 1 + 31 * 11);
+    }
+
+    void bakeBadOptions_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("both seconds and frames") << QStringList{"--seconds", "1", "--frames", "2"};
+        QTest::newRow("bad integrator") << QStringList{"--integrator", "leapfrog"};
+        QTest::newRow("bad effect") << QStringList{"--effects", "auto,-magic"};
+        QTest::newRow("negative substeps") << QStringList{"--substeps", "-2"};
+    }
+    void bakeBadOptions() {
+        QFETCH(QStringList, args);
+        const Run r = runCli(QStringList{"bake", scenePath("stack.obj")} + args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(!r.err.isEmpty());
+    }
+
     void infoTextMentionsWarnings() {
         const Run r = runCli({"info", scenePath("mixed.obj")});
         QCOMPARE(r.exitCode, 0);

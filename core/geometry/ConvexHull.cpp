@@ -16,6 +16,8 @@ constexpr Real kEpsilon = std::numeric_limits<Real>::epsilon();
 // sums of three products, so a few dozen ulps bound what arithmetic alone can produce; the tolerance never goes
 // below that, or points far from the origin would be judged by their rounding noise.
 constexpr Real kUlpFactor = 32.0;
+// Rounds of absorbing faces into a visible set whose horizon is not one loop; in practice one or two suffice.
+constexpr int kMaxHorizonRepairs = 16;
 
 // Triangle of the working hull. adj[i] is the triangle across the directed edge v[i] -> v[(i + 1) % 3].
 struct Triangle {
@@ -29,38 +31,65 @@ struct Triangle {
     bool alive = true;
 };
 
+// Plane normals are computed in extended precision. A sliver triangle (height h, length L) gets a normal whose
+// angle error is about (unit roundoff) * L / h, and over the length L that tilts the plane by roundoff * L^2 / h.
+// With 64-bit mantissas a sliver of relative height 1e-9 still keeps its plane well inside the distance tolerance.
+using Wide = long double;
+
+struct WideVec {
+    Wide x, y, z;
+};
+
+WideVec wide(const Vec3& v) {
+    return {v.x, v.y, v.z};
+}
+WideVec sub(const WideVec& a, const WideVec& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+WideVec cross(const WideVec& a, const WideVec& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+Wide dot(const WideVec& a, const WideVec& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+Vec3 unit(const WideVec& n) {
+    const Wide len = std::sqrt(dot(n, n));
+    if (!(len > 0))
+        return Vec3(0.0);
+    return Vec3(static_cast<Real>(n.x / len), static_cast<Real>(n.y / len), static_cast<Real>(n.z / len));
+}
+
 // Unit normal of a triangle from the two shortest edges: their cross product loses the least to cancellation.
-Vec3 triangleNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 e0 = b - a;
-    const Vec3 e1 = c - b;
-    const Vec3 e2 = a - c;
-    const Real l0 = glm::dot(e0, e0);
-    const Real l1 = glm::dot(e1, e1);
-    const Real l2 = glm::dot(e2, e2);
-    Vec3 n;
+Vec3 triangleNormal(const Vec3& pa, const Vec3& pb, const Vec3& pc) {
+    const WideVec a = wide(pa), b = wide(pb), c = wide(pc);
+    const WideVec e0 = sub(b, a);
+    const WideVec e1 = sub(c, b);
+    const WideVec e2 = sub(a, c);
+    const Wide l0 = dot(e0, e0);
+    const Wide l1 = dot(e1, e1);
+    const Wide l2 = dot(e2, e2);
     if (l0 >= l1 && l0 >= l2)
-        n = glm::cross(e1, e2);
-    else if (l1 >= l0 && l1 >= l2)
-        n = glm::cross(e2, e0);
-    else
-        n = glm::cross(e0, e1);
-    const Real len = glm::length(n);
-    return len > 0.0 ? n / len : Vec3(0.0);
+        return unit(cross(e1, e2));
+    if (l1 >= l0 && l1 >= l2)
+        return unit(cross(e2, e0));
+    return unit(cross(e0, e1));
 }
 
 // Newell's normal of a polygon: the area-weighted average over all its edges, robust for many near-collinear vertices.
 Vec3 newellNormal(const std::vector<Vec3>& pts, const std::vector<uint32_t>& loop) {
-    Vec3 n(0.0);
+    WideVec n{0, 0, 0};
     const size_t count = loop.size();
+    // Relative to the first vertex, so that the sums do not carry the polygon's distance from the origin.
+    const WideVec origin = wide(pts[loop[0]]);
     for (size_t i = 0; i < count; ++i) {
-        const Vec3& p = pts[loop[i]];
-        const Vec3& q = pts[loop[(i + 1) % count]];
+        const WideVec p = sub(wide(pts[loop[i]]), origin);
+        const WideVec q = sub(wide(pts[loop[(i + 1) % count]]), origin);
         n.x += (p.y - q.y) * (p.z + q.z);
         n.y += (p.z - q.z) * (p.x + q.x);
         n.z += (p.x - q.x) * (p.y + q.y);
     }
-    const Real len = glm::length(n);
-    return len > 0.0 ? n / len : Vec3(0.0);
+    return unit(n);
 }
 
 // Any unit vector perpendicular to n.
@@ -82,8 +111,12 @@ public:
 private:
     Real distance(const Triangle& t, uint32_t p) const { return glm::dot(t.normal, m_pts[p]) - t.offset; }
     int32_t addTriangle(uint32_t a, uint32_t b, uint32_t c);
-    void assign(const std::vector<uint32_t>& candidates, const std::vector<int32_t>& faces);
+    bool convexLoop(const std::vector<uint32_t>& loop) const;
+    void assign(const std::vector<uint32_t>& candidates, const std::vector<int32_t>& faces,
+                const std::vector<int32_t>& fallback);
     bool addPoint(int32_t seedFace, uint32_t p);
+    template <class Edge>
+    bool horizonLoop(const std::vector<Edge>& horizon, std::vector<Edge>& order);
 
     const std::vector<Vec3>& m_pts;
     Real m_eps;
@@ -91,7 +124,44 @@ private:
     std::vector<uint32_t> m_stamp; // per triangle: iteration in which visibility was decided
     std::vector<uint8_t> m_visible;
     uint32_t m_iteration = 0;
+    std::vector<int32_t> m_pending; // faces whose conflict list became non-empty, processed last-in first-out
+    // Per point: the horizon edge starting there, valid while m_vertexStamp equals the current loop check.
+    std::vector<uint32_t> m_vertexStamp;
+    std::vector<uint32_t> m_vertexSlot;
+    uint32_t m_loopCheck = 0;
 };
+
+// Orders the horizon edges into one loop; false if they form several loops or pass a vertex twice.
+template <class Edge>
+bool QuickHull::horizonLoop(const std::vector<Edge>& horizon, std::vector<Edge>& order) {
+    order.clear();
+    if (horizon.size() < 3)
+        return false;
+    if (m_vertexStamp.size() != m_pts.size()) {
+        m_vertexStamp.assign(m_pts.size(), 0);
+        m_vertexSlot.assign(m_pts.size(), 0);
+    }
+    ++m_loopCheck;
+    for (size_t i = 0; i < horizon.size(); ++i) {
+        const uint32_t start = m_tris[horizon[i].face].v[horizon[i].edge];
+        if (m_vertexStamp[start] == m_loopCheck)
+            return false; // pinched: two horizon edges leave the same vertex
+        m_vertexStamp[start] = m_loopCheck;
+        m_vertexSlot[start] = static_cast<uint32_t>(i);
+    }
+    size_t current = 0;
+    for (size_t i = 0; i < horizon.size(); ++i) {
+        // Returning to the first edge before all are used means a second loop exists.
+        if (i > 0 && current == 0)
+            return false;
+        order.push_back(horizon[current]);
+        const uint32_t end = m_tris[horizon[current].face].v[(horizon[current].edge + 1) % 3];
+        if (m_vertexStamp[end] != m_loopCheck)
+            return false;
+        current = m_vertexSlot[end];
+    }
+    return current == 0;
+}
 
 int32_t QuickHull::addTriangle(uint32_t a, uint32_t b, uint32_t c) {
     Triangle t;
@@ -105,7 +175,8 @@ int32_t QuickHull::addTriangle(uint32_t a, uint32_t b, uint32_t c) {
     return static_cast<int32_t>(m_tris.size() - 1);
 }
 
-void QuickHull::assign(const std::vector<uint32_t>& candidates, const std::vector<int32_t>& faces) {
+void QuickHull::assign(const std::vector<uint32_t>& candidates, const std::vector<int32_t>& faces,
+                       const std::vector<int32_t>& fallback) {
     for (uint32_t p : candidates) {
         int32_t best = -1;
         Real bestDistance = m_eps;
@@ -116,10 +187,24 @@ void QuickHull::assign(const std::vector<uint32_t>& candidates, const std::vecto
                 best = f;
             }
         }
-        // Points within the tolerance of every new face are inside (or on) the hull and are dropped for good.
+        // In exact arithmetic a point outside a deleted face is either inside the new hull or outside a new face.
+        // With a tolerance, a point can sit within it of a steep new face and still be outside an old face next to
+        // the cone (thin slabs do this), so the faces around the cone get a second look before a point is dropped.
+        if (best < 0) {
+            for (int32_t f : fallback) {
+                const Real d = distance(m_tris[f], p);
+                if (d > bestDistance) {
+                    bestDistance = d;
+                    best = f;
+                }
+            }
+        }
         if (best < 0)
-            continue;
+            continue; // inside, or on the hull within the tolerance: dropped for good
         Triangle& t = m_tris[best];
+        if (t.conflict.empty()) {
+            m_pending.push_back(best);
+        }
         if (t.conflict.empty() || bestDistance > t.furthestDistance) {
             t.furthest = p;
             t.furthestDistance = bestDistance;
@@ -156,25 +241,31 @@ bool QuickHull::build(const std::array<uint32_t, 4>& s) {
         if (i != a && i != b && i != c && i != d)
             rest.push_back(i);
     }
-    assign(rest, ids);
+    assign(rest, ids, {});
 
-    // Every iteration either makes a point a hull vertex or drops it, and a point is in at most one conflict list,
-    // so the work is bounded by the number of points. A face that stops being alive is never revisited.
-    for (size_t f = 0; f < m_tris.size(); ++f) {
-        size_t guard = m_pts.size() + 1;
-        while (m_tris[f].alive && !m_tris[f].conflict.empty() && guard-- > 0) {
-            const uint32_t p = m_tris[f].furthest;
-            if (!addPoint(static_cast<int32_t>(f), p)) {
-                // The visible region was not a disc (rounding); this point stays within tolerance of the hull.
-                Triangle& t = m_tris[f];
-                t.conflict.erase(std::find(t.conflict.begin(), t.conflict.end(), p));
-                t.furthestDistance = 0.0;
-                for (uint32_t q : t.conflict) {
-                    const Real dq = distance(t, q);
-                    if (dq > t.furthestDistance) {
-                        t.furthestDistance = dq;
-                        t.furthest = q;
-                    }
+    // Every insertion makes a point a hull vertex or drops it, and a point is in at most one conflict list, so
+    // there are at most as many insertions as points. A face enters the work list each time its conflict list
+    // goes from empty to non-empty; dead faces are skipped.
+    // Pops of finished faces are bounded by the pushes, which only happen inside the bounded point insertions.
+    size_t insertions = m_pts.size() + 1;
+    while (!m_pending.empty() && insertions > 0) {
+        const int32_t f = m_pending.back();
+        if (!m_tris[f].alive || m_tris[f].conflict.empty()) {
+            m_pending.pop_back();
+            continue;
+        }
+        --insertions;
+        const uint32_t p = m_tris[f].furthest;
+        if (!addPoint(f, p)) {
+            // The visible region could not be made a disc; the point is left out (it is within rounding of it).
+            Triangle& t = m_tris[f];
+            t.conflict.erase(std::find(t.conflict.begin(), t.conflict.end(), p));
+            t.furthestDistance = 0.0;
+            for (uint32_t q : t.conflict) {
+                const Real dq = distance(t, q);
+                if (dq > t.furthestDistance) {
+                    t.furthestDistance = dq;
+                    t.furthest = q;
                 }
             }
         }
@@ -184,78 +275,95 @@ bool QuickHull::build(const std::array<uint32_t, 4>& s) {
 
 bool QuickHull::addPoint(int32_t seedFace, uint32_t p) {
     ++m_iteration;
-    struct Frame {
-        int32_t face;
-        int edge;
-        int remaining;
-    };
     struct HorizonEdge {
         int32_t face; // visible face
         int edge;     // its edge index on the horizon
     };
+    // Flood over the faces that see p, starting from the face whose conflict list holds it.
     std::vector<int32_t> visible{seedFace};
-    std::vector<HorizonEdge> horizon;
-    std::vector<Frame> stack{{seedFace, 0, 3}};
     m_stamp[seedFace] = m_iteration;
     m_visible[seedFace] = 1;
-    // Depth-first flood over faces that see p; the edges to faces that do not see it form the horizon.
-    const size_t maxSteps = 3 * m_tris.size() + 3;
-    for (size_t step = 0; !stack.empty() && step < maxSteps; ++step) {
-        Frame& top = stack.back();
-        if (top.remaining == 0) {
-            stack.pop_back();
-            continue;
-        }
-        const int32_t face = top.face;
-        const int e = top.edge;
-        top.edge = (e + 1) % 3;
-        --top.remaining;
-        const int32_t nb = m_tris[face].adj[e];
-        if (m_stamp[nb] != m_iteration) {
+    for (size_t i = 0; i < visible.size(); ++i) {
+        for (int32_t nb : m_tris[visible[i]].adj) {
+            if (m_stamp[nb] == m_iteration)
+                continue;
             m_stamp[nb] = m_iteration;
             m_visible[nb] = distance(m_tris[nb], p) > m_eps ? 1 : 0;
-            if (m_visible[nb]) {
+            if (m_visible[nb])
                 visible.push_back(nb);
-                int back = 0;
-                while (back < 3 && m_tris[nb].adj[back] != face)
-                    ++back;
-                stack.push_back({nb, (back + 1) % 3, 2});
-                continue;
+        }
+    }
+
+    // The visible set is then grown until the cone is sound, absorbing a face outside the horizon when
+    //  - p is above its plane at all (dist > 0): a cone face on that edge would fold in, a concave edge. Allowing
+    //    concave edges up to the tolerance lets the bends add up over many faces of a nearly flat surface; or
+    //  - p is within the tolerance of its plane and the cone triangle on the shared edge would be a sliver (p
+    //    within the tolerance of the edge's line) or would lie over the face itself: its normal would be noise
+    //    or point inward.
+    // Finally the horizon must be one simple loop. The visible set can enclose a face that p sees only within the
+    // tolerance, or touch itself at a vertex; such faces (two or more visible neighbours, p within the tolerance
+    // of their plane) are absorbed. Every round absorbs at least one face, and the rounds are capped.
+    std::vector<HorizonEdge> horizon;
+    std::vector<HorizonEdge> order;
+    std::vector<int32_t> absorb;
+    const size_t maxRounds = m_tris.size() + kMaxHorizonRepairs;
+    int loopRepairs = 0;
+    for (size_t round = 0;; ++round) {
+        if (round >= maxRounds)
+            return false;
+        horizon.clear();
+        absorb.clear();
+        for (int32_t f : visible) {
+            for (int e = 0; e < 3; ++e) {
+                const int32_t nb = m_tris[f].adj[e];
+                if (m_visible[nb])
+                    continue;
+                horizon.push_back({f, e});
+                const Real d = distance(m_tris[nb], p);
+                bool take = d > 0.0;
+                if (!take && d > -m_eps) {
+                    const Vec3& a = m_pts[m_tris[f].v[e]];
+                    const Vec3 ab = m_pts[m_tris[f].v[(e + 1) % 3]] - a;
+                    const Real len = glm::length(ab);
+                    const Vec3 ap = m_pts[p] - a;
+                    // Sliver, or p lies (within the tolerance of nb's plane) on nb's side of the edge, where the
+                    // cone triangle would fold back over nb with its normal reversed.
+                    take = !(glm::length(glm::cross(ab, ap)) > m_eps * len) ||
+                           glm::dot(glm::cross(m_tris[nb].normal, -ab), ap) > 0.0;
+                }
+                if (take && std::find(absorb.begin(), absorb.end(), nb) == absorb.end())
+                    absorb.push_back(nb);
             }
         }
-        if (!m_visible[nb])
-            horizon.push_back({face, e});
+        if (absorb.empty()) {
+            if (horizonLoop(horizon, order))
+                break;
+            if (++loopRepairs > kMaxHorizonRepairs)
+                return false;
+            for (const HorizonEdge& h : horizon) {
+                const int32_t nb = m_tris[h.face].adj[h.edge];
+                int seen = 0;
+                for (int32_t x : m_tris[nb].adj)
+                    seen += m_visible[x];
+                // Only faces p sees within the tolerance: absorbing one it is clearly behind would dent the hull.
+                if (seen >= 2 && distance(m_tris[nb], p) > -m_eps &&
+                    std::find(absorb.begin(), absorb.end(), nb) == absorb.end())
+                    absorb.push_back(nb);
+            }
+            if (absorb.empty())
+                return false;
+        }
+        for (int32_t f : absorb) {
+            m_visible[f] = 1;
+            visible.push_back(f);
+        }
     }
-    if (!stack.empty() || horizon.size() < 3)
-        return false;
-
-    // Order the horizon into one loop; a pinched or split horizon would make the hull non-manifold.
-    std::unordered_map<uint32_t, size_t> byStart;
-    byStart.reserve(horizon.size() * 2);
-    for (size_t i = 0; i < horizon.size(); ++i) {
-        const uint32_t start = m_tris[horizon[i].face].v[horizon[i].edge];
-        if (!byStart.emplace(start, i).second)
-            return false;
-    }
-    std::vector<size_t> order;
-    order.reserve(horizon.size());
-    size_t current = 0;
-    for (size_t i = 0; i < horizon.size(); ++i) {
-        order.push_back(current);
-        const uint32_t end = m_tris[horizon[current].face].v[(horizon[current].edge + 1) % 3];
-        const auto it = byStart.find(end);
-        if (it == byStart.end())
-            return false;
-        current = it->second;
-    }
-    if (current != 0)
-        return false;
 
     // Cone from p to every horizon edge, stitched to the faces outside and to each other.
     const size_t n = order.size();
     std::vector<int32_t> cone(n);
     for (size_t i = 0; i < n; ++i) {
-        const HorizonEdge h = horizon[order[i]];
+        const HorizonEdge h = order[i];
         const uint32_t a = m_tris[h.face].v[h.edge];
         const uint32_t b = m_tris[h.face].v[(h.edge + 1) % 3];
         const int32_t outside = m_tris[h.face].adj[h.edge];
@@ -282,7 +390,38 @@ bool QuickHull::addPoint(int32_t seedFace, uint32_t p) {
         }
         std::vector<uint32_t>().swap(t.conflict);
     }
-    assign(orphans, cone);
+    // The faces just outside the horizon: each cone face was stitched to one of them across its base edge.
+    std::vector<int32_t> around;
+    around.reserve(cone.size());
+    for (int32_t c : cone)
+        around.push_back(m_tris[c].adj[0]);
+    assign(orphans, cone, around);
+    return true;
+}
+
+// A merged group is only kept as one face if its outline is convex: on a surface that curves by less than the
+// tolerance, the triangles within the tolerance of one plane can cover a non-convex patch.
+bool QuickHull::convexLoop(const std::vector<uint32_t>& loop) const {
+    const Vec3 n = newellNormal(m_pts, loop);
+    const size_t count = loop.size();
+    // All vertices against all edges for ordinary faces; very large faces check each edge against its next vertex.
+    constexpr size_t kFullCheckLimit = 256;
+    for (size_t i = 0; i < count; ++i) {
+        const Vec3& a = m_pts[loop[i]];
+        const Vec3 edge = m_pts[loop[(i + 1) % count]] - a;
+        const Vec3 inward = glm::cross(n, edge);
+        const Real len = glm::length(inward);
+        if (!(len > 0.0))
+            return false;
+        if (count <= kFullCheckLimit) {
+            for (uint32_t v : loop) {
+                if (glm::dot(inward, m_pts[v] - a) < -m_eps * len)
+                    return false;
+            }
+        } else if (glm::dot(inward, m_pts[loop[(i + 2) % count]] - a) < -m_eps * len) {
+            return false;
+        }
+    }
     return true;
 }
 
@@ -355,7 +494,7 @@ std::vector<std::vector<uint32_t>> QuickHull::mergedFaces() const {
                     loop.push_back(at);
                     at = next[at];
                 }
-                ok = at == start;
+                ok = at == start && convexLoop(loop);
             } else {
                 ok = false;
             }

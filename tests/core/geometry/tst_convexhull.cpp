@@ -378,13 +378,18 @@ private slots:
     void randomClouds_data() {
         QTest::addColumn<int>("seed");
         QTest::addColumn<int>("count");
-        QTest::addColumn<int>("kind"); // 0 box, 1 ball, 2 sphere surface, 3 grid-snapped box (many coplanar)
+        // 0 box, 1 ball, 2 sphere surface, 3 grid-snapped box (many exactly coplanar points), 4 the grid jittered by
+        // 1e-10 (coplanar only within the tolerance), 5 a slab 1e-7 thick (nearly flat, so concave folds would add
+        // up), 6 the rims of a 32-gon cylinder jittered by 1e-10.
+        QTest::addColumn<int>("kind");
         QTest::addColumn<Real>("scale");
         QTest::addColumn<Vec3>("offset");
         const int counts[10] = {5, 12, 50, 100, 300, 600, 1000, 1500, 2000, 2000};
         const Real scales[10] = {1.0, 1e-3, 1e3, 1.0, 1.0, 1e-3, 1e3, 1.0, 1.0, 1.0};
         for (int seed = 0; seed < 10; ++seed) {
-            for (int kind = 0; kind < 4; ++kind) {
+            for (int kind = 0; kind < 7; ++kind) {
+                if (kind == 6 && counts[seed] < 50)
+                    continue; // a few rim points may all lie on one rim: flat, not a solid
                 const Vec3 offset = seed % 3 == 2 ? Vec3(1e3, 2e3, -5e2) * scales[seed] : Vec3(0.0);
                 QTest::addRow("seed %d kind %d n %d", seed, kind, counts[seed])
                     << seed << counts[seed] << kind << scales[seed] << offset;
@@ -407,8 +412,16 @@ private slots:
                 continue;
             if (kind == 2)
                 p = glm::normalize(Vec3(g(rng), g(rng), g(rng)));
-            if (kind == 3)
+            if (kind == 3 || kind == 4)
                 p = glm::round(p * 4.0) / 4.0;
+            if (kind == 5)
+                p.y *= 1e-7;
+            if (kind == 6) {
+                const Real a = 2.0 * kPi * std::floor((u(rng) + 1.0) * 16.0) / 32.0;
+                p = Vec3(std::cos(a), p.y > 0.0 ? 1.0 : -1.0, std::sin(a));
+            }
+            if (kind == 4 || kind == 6)
+                p += 1e-10 * Vec3(u(rng), u(rng), u(rng));
             pts.push_back(offset + scale * p);
         }
         const ConvexHull hull = computeConvexHull(pts);

@@ -69,6 +69,40 @@ void BroadPhase::addCandidate(ProxyKey a, ProxyKey b) {
         m_candidates.push_back({idB, idA, b, a});
 }
 
+// Spreads the bits of a 21-bit integer so that three of them interleave into a 63-bit Morton code.
+static uint64_t spreadBits(uint64_t v) {
+    v &= 0x1fffff;
+    v = (v | v << 32) & 0x1f00000000ffffull;
+    v = (v | v << 16) & 0x1f0000ff0000ffull;
+    v = (v | v << 8) & 0x100f00f00f00f00full;
+    v = (v | v << 4) & 0x10c30c30c30c30c3ull;
+    v = (v | v << 2) & 0x1249249249249249ull;
+    return v;
+}
+
+// Queries are bound by fetching tree nodes from memory. Issuing them in Morton order of the box centres makes
+// consecutive queries walk the same nodes while they are still in cache. The pair list is sorted afterwards, so
+// the order of queries never shows in the result.
+void BroadPhase::sortMoveBufferSpatially() {
+    if (m_moveBuffer.size() < 64)
+        return;
+    Aabb bounds = fatAabb(m_moveBuffer.front());
+    for (const ProxyKey key : m_moveBuffer)
+        bounds = unionOf(bounds, fatAabb(key));
+    const Vec3 extent = bounds.max - bounds.min;
+    const Real scale = static_cast<Real>(0x1fffff) / std::max({extent.x, extent.y, extent.z, 1e-9});
+    m_sortKeys.clear();
+    for (const ProxyKey key : m_moveBuffer) {
+        const Vec3 c = (fatAabb(key).center() - bounds.min) * scale;
+        const uint64_t code = spreadBits(static_cast<uint64_t>(c.x)) | spreadBits(static_cast<uint64_t>(c.y)) << 1 |
+                              spreadBits(static_cast<uint64_t>(c.z)) << 2;
+        m_sortKeys.push_back({code, key});
+    }
+    std::sort(m_sortKeys.begin(), m_sortKeys.end());
+    for (size_t i = 0; i < m_sortKeys.size(); ++i)
+        m_moveBuffer[i] = m_sortKeys[i].second;
+}
+
 void BroadPhase::updatePairs() {
     m_candidates.clear();
     m_added.clear();
@@ -78,6 +112,7 @@ void BroadPhase::updatePairs() {
 
     const DynamicTree& dynamicTree = m_trees[index(ProxyKind::Dynamic)];
     const DynamicTree& staticTree = m_trees[index(ProxyKind::Static)];
+    sortMoveBufferSpatially();
 
     // Each overlap involving a moved proxy is found from exactly one side: when both proxies moved, only the
     // query of the dynamic one with the larger id (or the dynamic one, against a static) records it.

@@ -10,6 +10,7 @@
 #include <compare>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace rl {
@@ -95,10 +96,12 @@ private:
     bool isMoved(ProxyKey key) const { return m_moved[index(key.kind)][key.proxy] != 0; }
     void markMoved(ProxyKey key);
     void addCandidate(ProxyKey a, ProxyKey b);
+    void sortMoveBufferSpatially();
 
     DynamicTree m_trees[2];
     std::vector<uint8_t> m_moved[2]; // per proxy id: in the move buffer since the last update
     std::vector<ProxyKey> m_moveBuffer;
+    std::vector<std::pair<uint64_t, ProxyKey>> m_sortKeys;
     std::vector<BroadPhasePair> m_candidates;
     std::vector<BroadPhasePair> m_pairs;
     std::vector<BroadPhasePair> m_added;

@@ -44,7 +44,7 @@ public:
     bool empty() const { return m_size == 0; }
 
 private:
-    std::array<int32_t, 128> m_inline{};
+    std::array<int32_t, 128> m_inline; // left uninitialised: it is written before it is read
     std::vector<int32_t> m_spill;
     int32_t m_size = 0;
 };
@@ -100,13 +100,17 @@ public:
     bool validate(std::string* problem = nullptr) const;
 
 private:
-    struct Node {
+    // One cache line per node: traversals are bound by memory, not arithmetic. A leaf has no children, so its
+    // second child slot holds the user id.
+    struct alignas(64) Node {
         Aabb box;
         int32_t parent = kNullNode; // next free node while on the free list
         int32_t child1 = kNullNode;
-        int32_t child2 = kNullNode;
+        union {
+            int32_t child2 = kNullNode;
+            uint32_t userId; // leaves only
+        };
         int32_t height = -1; // 0 leaf, -1 free
-        uint32_t userId = 0;
 
         bool isLeaf() const { return height == 0; }
     };

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <climits>
 #include <cmath>
+#include <filesystem>
 #include <map>
 
 namespace rl {
@@ -464,6 +465,10 @@ private:
             !out.objFile.empty() && out.objFile.front() == '/' ? out.objFile : parentDirectory(m_path) + out.objFile;
         auto cached = m_objCache.find(resolved);
         if (cached == m_objCache.end()) {
+            // A scene names files; "/dev/zero" or a FIFO would make the read endless or block.
+            std::error_code ec;
+            if (std::filesystem::exists(resolved, ec) && !std::filesystem::is_regular_file(resolved, ec))
+                return fail(at, context, "cannot load " + quotedName(out.objFile) + ": not a regular file");
             Result<ObjFile> file = readObjFile(resolved);
             if (!file)
                 return fail(at, context, "cannot load " + quotedName(out.objFile) + ": " + file.error().toString());

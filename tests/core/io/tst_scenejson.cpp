@@ -298,6 +298,8 @@ private slots:
             << 3 << "has index 3";
         QTest::newRow("obj file missing") << withBodies({"{\"name\": \"P\", \"shape\": {\"obj\": \"nowhere.obj\"}}"})
                                           << 3 << "cannot load 'nowhere.obj'";
+        QTest::newRow("obj is a device") << withBodies({"{\"name\": \"P\", \"shape\": {\"obj\": \"/dev/zero\"}}"}) << 3
+                                         << "not a regular file";
         QTest::newRow("obj object missing")
             << withBodies({"{\"name\": \"P\", \"shape\": {\"obj\": \"parts.obj\", \"object\": \"Nope\"}}"}) << 3
             << "no object 'Nope' in 'parts.obj' (it has Cube.001, Tetra)";

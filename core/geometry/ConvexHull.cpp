@@ -110,6 +110,8 @@ public:
 
 private:
     Real distance(const Triangle& t, uint32_t p) const { return glm::dot(t.normal, m_pts[p]) - t.offset; }
+    // Visibility flags are only meaningful for faces stamped in the current insertion.
+    bool visibleNow(int32_t f) const { return m_stamp[f] == m_iteration && m_visible[f] != 0; }
     int32_t addTriangle(uint32_t a, uint32_t b, uint32_t c);
     bool convexLoop(const std::vector<uint32_t>& loop) const;
     void assign(const std::vector<uint32_t>& candidates, const std::vector<int32_t>& faces,
@@ -125,6 +127,7 @@ private:
     std::vector<uint8_t> m_visible;
     uint32_t m_iteration = 0;
     std::vector<int32_t> m_pending; // faces whose conflict list became non-empty, processed last-in first-out
+    std::vector<int32_t> m_free;    // slots of deleted faces
     // Per point: the horizon edge starting there, valid while m_vertexStamp equals the current loop check.
     std::vector<uint32_t> m_vertexStamp;
     std::vector<uint32_t> m_vertexSlot;
@@ -164,15 +167,24 @@ bool QuickHull::horizonLoop(const std::vector<Edge>& horizon, std::vector<Edge>&
 }
 
 int32_t QuickHull::addTriangle(uint32_t a, uint32_t b, uint32_t c) {
-    Triangle t;
+    int32_t id;
+    // Slots of deleted faces are reused: a large hull deletes several faces per inserted point.
+    if (!m_free.empty()) {
+        id = m_free.back();
+        m_free.pop_back();
+        m_tris[id] = Triangle{};
+    } else {
+        id = static_cast<int32_t>(m_tris.size());
+        m_tris.emplace_back();
+        m_stamp.push_back(0);
+        m_visible.push_back(0);
+    }
+    Triangle& t = m_tris[id];
     t.v = {a, b, c};
     t.normal = triangleNormal(m_pts[a], m_pts[b], m_pts[c]);
     // The centroid averages the rounding of the three vertices.
     t.offset = glm::dot(t.normal, (m_pts[a] + m_pts[b] + m_pts[c]) / 3.0);
-    m_tris.push_back(std::move(t));
-    m_stamp.push_back(0);
-    m_visible.push_back(0);
-    return static_cast<int32_t>(m_tris.size() - 1);
+    return id;
 }
 
 void QuickHull::assign(const std::vector<uint32_t>& candidates, const std::vector<int32_t>& faces,
@@ -316,7 +328,7 @@ bool QuickHull::addPoint(int32_t seedFace, uint32_t p) {
         for (int32_t f : visible) {
             for (int e = 0; e < 3; ++e) {
                 const int32_t nb = m_tris[f].adj[e];
-                if (m_visible[nb])
+                if (visibleNow(nb))
                     continue;
                 horizon.push_back({f, e});
                 const Real d = distance(m_tris[nb], p);
@@ -344,7 +356,7 @@ bool QuickHull::addPoint(int32_t seedFace, uint32_t p) {
                 const int32_t nb = m_tris[h.face].adj[h.edge];
                 int seen = 0;
                 for (int32_t x : m_tris[nb].adj)
-                    seen += m_visible[x];
+                    seen += visibleNow(x) ? 1 : 0;
                 // Only faces p sees within the tolerance: absorbing one it is clearly behind would dent the hull.
                 if (seen >= 2 && distance(m_tris[nb], p) > -m_eps &&
                     std::find(absorb.begin(), absorb.end(), nb) == absorb.end())
@@ -354,6 +366,7 @@ bool QuickHull::addPoint(int32_t seedFace, uint32_t p) {
                 return false;
         }
         for (int32_t f : absorb) {
+            m_stamp[f] = m_iteration;
             m_visible[f] = 1;
             visible.push_back(f);
         }
@@ -396,6 +409,7 @@ bool QuickHull::addPoint(int32_t seedFace, uint32_t p) {
     for (int32_t c : cone)
         around.push_back(m_tris[c].adj[0]);
     assign(orphans, cone, around);
+    m_free.insert(m_free.end(), visible.begin(), visible.end());
     return true;
 }
 
@@ -685,27 +699,38 @@ ConvexHull computeConvexHull(std::span<const Vec3> points, const HullOptions& op
 
     // A vertex shared by only two faces sits in the middle of a straight edge between them; it is not a corner.
     // It is removed from both faces at once (never from just one) so that the edges still pair up.
-    std::unordered_map<uint32_t, std::vector<size_t>> facesOf;
+    // Per point: how many faces use it, and the first two of them (only vertices in exactly two faces matter).
+    constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+    std::vector<uint32_t> faceCount(local.size(), 0);
+    std::vector<std::array<uint32_t, 2>> firstFaces(local.size(), {kNone, kNone});
     for (size_t f = 0; f < loops.size(); ++f) {
-        for (uint32_t v : loops[f])
-            facesOf[v].push_back(f);
+        for (uint32_t v : loops[f]) {
+            if (faceCount[v] < 2)
+                firstFaces[v][faceCount[v]] = static_cast<uint32_t>(f);
+            ++faceCount[v];
+        }
     }
-    for (const auto& [v, fs] : facesOf) {
-        if (fs.size() != 2 || loops[fs[0]].size() < 4 || loops[fs[1]].size() < 4)
+    for (uint32_t v = 0; v < local.size(); ++v) {
+        if (faceCount[v] != 2)
             continue;
-        for (size_t f : fs)
-            loops[f].erase(std::find(loops[f].begin(), loops[f].end(), v));
+        auto& a = loops[firstFaces[v][0]];
+        auto& b = loops[firstFaces[v][1]];
+        if (a.size() < 4 || b.size() < 4)
+            continue;
+        a.erase(std::find(a.begin(), a.end(), v));
+        b.erase(std::find(b.begin(), b.end(), v));
     }
 
     // Compact to the vertices that faces use, in first-use order.
-    std::unordered_map<uint32_t, uint32_t> remap;
+    std::vector<uint32_t> remap(local.size(), kNone);
     std::vector<uint32_t> used;
     for (auto& loop : loops) {
         for (uint32_t& v : loop) {
-            const auto [it, inserted] = remap.emplace(v, static_cast<uint32_t>(used.size()));
-            if (inserted)
+            if (remap[v] == kNone) {
+                remap[v] = static_cast<uint32_t>(used.size());
                 used.push_back(v);
-            v = it->second;
+            }
+            v = remap[v];
         }
     }
     hull.dimension = HullDimension::Solid;

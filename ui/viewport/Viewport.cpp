@@ -75,7 +75,6 @@ void Viewport::paintGL() {
     QElapsedTimer timer;
     timer.start();
     const qreal ratio = devicePixelRatioF();
-    m_camera.setViewportSize(width(), height());
     m_renderer.render(m_camera, static_cast<int>(std::lround(width() * ratio)),
                       static_cast<int>(std::lround(height() * ratio)), m_options);
 
@@ -151,6 +150,7 @@ void Viewport::setInstanceAppearance(int instance, const glm::vec3& colour, uint
 }
 
 void Viewport::frameAll() {
+    m_camera.setViewportSize(width(), height()); // framing may come before the first resizeGL
     Bounds all = m_scene.bounds();
     if (all.isEmpty()) {
         all.extend(glm::vec3(-5.0f, 0.0f, -5.0f)); // an empty scene shows a patch of the grid
@@ -161,6 +161,7 @@ void Viewport::frameAll() {
 }
 
 void Viewport::frameSelection() {
+    m_camera.setViewportSize(width(), height());
     const Bounds selected = m_scene.bounds(true);
     if (selected.isEmpty()) {
         frameAll();

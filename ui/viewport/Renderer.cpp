@@ -316,7 +316,9 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     // whose top face lies in the plane y = 0.
     if (options.grid) {
         glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        // The destination alpha stays 1: Qt composes the widget's image with its alpha, and a grid line must not
+        // turn the frame translucent.
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         glDepthMask(GL_FALSE);
         glDepthFunc(GL_LEQUAL);
         glEnable(GL_POLYGON_OFFSET_FILL);

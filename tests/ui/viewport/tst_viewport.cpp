@@ -6,6 +6,8 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QTest>
@@ -145,7 +147,22 @@ void TestViewport::drawsBodiesGridAndBackground() {
     m_viewport->setScene(makeBoxesScene());
     showViewport(640, 480);
     m_viewport->frameAll();
-    const QImage image = grab();
+    const QImage raw = m_viewport->grabFramebuffer();
+    // The frame is opaque everywhere: Qt composes the widget with its alpha, and the blended grid must not lower it.
+    // grabFramebuffer() drops alpha, so the widget's framebuffer is read back directly.
+    m_viewport->makeCurrent();
+    QOpenGLFunctions* gl = m_viewport->context()->functions();
+    gl->glBindFramebuffer(GL_FRAMEBUFFER, m_viewport->defaultFramebufferObject());
+    const int w = raw.width();
+    const int h = raw.height();
+    std::vector<uchar> rgba(static_cast<size_t>(w) * h * 4);
+    gl->glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    m_viewport->doneCurrent();
+    int translucent = 0;
+    for (size_t i = 3; i < rgba.size(); i += 4)
+        translucent += rgba[i] != 255;
+    QCOMPARE(translucent, 0);
+    const QImage image = raw.convertToFormat(QImage::Format_RGB32);
     image.save(QDir::tempPath() + QStringLiteral("/rl_viewport_boxes.png"));
     QCOMPARE(image.size(), QSize(640, 480) * m_viewport->devicePixelRatio());
 

@@ -283,37 +283,48 @@ void Viewport::wheelEvent(QWheelEvent* event) {
 
 void Viewport::keyPressEvent(QKeyEvent* event) {
     const bool keypad = event->modifiers() & Qt::KeypadModifier;
-    switch (event->key()) {
-    case Qt::Key_F:
-    case Qt::Key_Period:
-        frameSelection();
-        break;
-    case Qt::Key_Home:
-        frameAll();
-        break;
-    case Qt::Key_1: // Blender's numpad views: 1 front, 3 right, 7 top (Ctrl for the opposite side)
-    case Qt::Key_3:
-    case Qt::Key_7: {
-        if (!keypad) {
-            QOpenGLWidget::keyPressEvent(event);
-            return;
+    const bool opposite = event->modifiers() & Qt::ControlModifier;
+    int key = event->key();
+    // With Num Lock off the keypad sends navigation keys: map them back to the digits Blender's views use.
+    if (keypad) {
+        switch (key) {
+        case Qt::Key_End:
+            key = Qt::Key_1;
+            break;
+        case Qt::Key_PageDown:
+            key = Qt::Key_3;
+            break;
+        case Qt::Key_Home:
+            key = Qt::Key_7;
+            break;
+        case Qt::Key_Delete:
+            key = Qt::Key_Period;
+            break;
+        default:
+            break;
         }
-        const bool opposite = event->modifiers() & Qt::ControlModifier;
-        const float half = glm::half_pi<float>();
-        if (event->key() == Qt::Key_1) {
-            m_camera.setYaw(opposite ? glm::pi<float>() : 0.0f);
-            m_camera.setPitch(0.0f);
-        } else if (event->key() == Qt::Key_3) {
-            m_camera.setYaw(opposite ? -half : half);
-            m_camera.setPitch(0.0f);
-        } else {
-            m_camera.setYaw(0.0f);
-            m_camera.setPitch(opposite ? -half : half); // clamped just short of the pole
-        }
-        cameraMoved();
-        break;
     }
-    default:
+    const float half = glm::half_pi<float>();
+    if (key == Qt::Key_Escape && m_drag == Drag::BoxSelect) {
+        m_drag = Drag::None;
+        m_rubberBand->hide();
+    } else if (key == Qt::Key_F || key == Qt::Key_Period) {
+        frameSelection();
+    } else if (key == Qt::Key_Home) {
+        frameAll();
+    } else if (keypad && key == Qt::Key_1) { // Blender's numpad views; Ctrl looks from the opposite side
+        m_camera.setYaw(opposite ? glm::pi<float>() : 0.0f);
+        m_camera.setPitch(0.0f);
+        cameraMoved();
+    } else if (keypad && key == Qt::Key_3) {
+        m_camera.setYaw(opposite ? -half : half);
+        m_camera.setPitch(0.0f);
+        cameraMoved();
+    } else if (keypad && key == Qt::Key_7) {
+        m_camera.setYaw(0.0f);
+        m_camera.setPitch(opposite ? -half : half); // clamped just short of the pole
+        cameraMoved();
+    } else {
         QOpenGLWidget::keyPressEvent(event);
         return;
     }

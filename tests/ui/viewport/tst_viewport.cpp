@@ -276,6 +276,13 @@ void TestViewport::boxSelectTakesInstancesWhoseCentreIsInside() {
     std::sort(selected.begin(), selected.end());
     QCOMPARE(selected, (QList<int>{2, 3}));
     QCOMPARE(spy.at(0).at(1).toBool(), true);
+
+    // Escape abandons a box selection: the release then selects nothing.
+    QTest::mousePress(m_viewport.get(), Qt::LeftButton, Qt::NoModifier, from);
+    QTest::mouseMove(m_viewport.get(), to);
+    QTest::keyClick(m_viewport.get(), Qt::Key_Escape);
+    QTest::mouseRelease(m_viewport.get(), Qt::LeftButton, Qt::NoModifier, to);
+    QCOMPARE(spy.count(), 1);
 }
 
 void TestViewport::mouseAndKeysMoveTheCamera() {
@@ -327,6 +334,19 @@ void TestViewport::mouseAndKeysMoveTheCamera() {
     QTest::keyClick(m_viewport.get(), Qt::Key_Home);
     QTest::keyClick(m_viewport.get(), Qt::Key_Period, Qt::KeypadModifier);
     QVERIFY(glm::length(camera.target() - m_viewport->scene().instanceBounds(1).centre()) < 1e-4f);
+
+    // Numpad views: 7 looks down from the top, Ctrl+1 from the back (along +Z), 3 from the right (along -X); with
+    // Num Lock off the keypad sends Home/End/PageDown, which must give the same views and not "frame all".
+    QTest::keyClick(m_viewport.get(), Qt::Key_7, Qt::KeypadModifier);
+    QVERIFY(camera.forward().y < -0.99f);
+    QTest::keyClick(m_viewport.get(), Qt::Key_1, Qt::KeypadModifier | Qt::ControlModifier);
+    QVERIFY(camera.forward().z > 0.99f);
+    QTest::keyClick(m_viewport.get(), Qt::Key_PageDown, Qt::KeypadModifier);
+    QVERIFY(camera.forward().x < -0.99f);
+    const glm::vec3 beforeHome = camera.target();
+    QTest::keyClick(m_viewport.get(), Qt::Key_Home, Qt::KeypadModifier);
+    QVERIFY(camera.forward().y < -0.99f);
+    QCOMPARE(camera.target(), beforeHome);
 }
 
 void TestViewport::setTransformsMovesBodies() {

@@ -20,19 +20,26 @@ enum class HullDimension { Empty, Point, Line, Flat, Solid };
 
 struct ConvexHull {
     HullDimension dimension = HullDimension::Empty;
-    std::vector<Vec3> vertices;   // only the points that are hull vertices
-    std::vector<HullFace> faces;  // Solid: closed polyhedron. Flat: two faces, the polygon and its reverse.
+    std::vector<Vec3> vertices;       // only the points that are hull vertices
+    std::vector<HullFace> faces;      // Solid: closed polyhedron. Flat: two faces, the polygon and its reverse.
     std::vector<uint32_t> inputIndex; // for each hull vertex, the index of the input point it came from
+    // Absolute distance tolerance the hull was built with (m): every input point lies behind every face plane to
+    // within a few of these, and the vertices of a face lie on its plane to within a few of these.
+    Real tolerance = 0.0;
 
     bool isSolid() const { return dimension == HullDimension::Solid; }
 };
 
 struct HullOptions {
-    // Distance tolerance relative to the point set's extent: points closer than this to a face are coplanar.
+    // Distance tolerance relative to the point set's extent (bounding-box diagonal): points closer than this to a
+    // face are coplanar. It never goes below the rounding of the coordinates (a small object far from the origin).
+    // Non-positive or non-finite values mean the default.
     Real relativeTolerance = 1e-10;
 };
 
-// Never fails: degenerate input gives a lower dimension. Non-finite input points are ignored.
+// Never fails: degenerate input gives a lower dimension. Non-finite input points are ignored. A point set thinner
+// than 64 tolerances is Flat (its faces then lie within that thickness of the points). Solid faces are convex
+// polygons: triangles within the tolerance of one plane are merged when their outline stays convex.
 ConvexHull computeConvexHull(std::span<const Vec3> points, const HullOptions& options = {});
 
 } // namespace rl

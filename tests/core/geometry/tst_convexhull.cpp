@@ -158,6 +158,11 @@ private slots:
         verifySolid(hull, pts);
         QCOMPARE(hull.vertices.size(), size_t(8));
         QCOMPARE(faceSizes(hull), std::vector<int>(6, 4));
+        // The tolerance follows the size (1e-10 of the diagonal) unless the coordinates' rounding is larger.
+        const Real diagonal = 2.0 * std::sqrt(3.0) * halfExtent;
+        const Real maxAbs = std::max({std::abs(offset.x), std::abs(offset.y), std::abs(offset.z)}) + halfExtent;
+        QVERIFY(hull.tolerance >= 1e-10 * diagonal * (1.0 - 1e-12));
+        QVERIFY(hull.tolerance <= std::max(1e-10 * diagonal, 1e-14 * maxAbs) * (1.0 + 1e-12));
         for (const HullFace& f : hull.faces) {
             const Real axisAligned = std::max({std::abs(f.normal.x), std::abs(f.normal.y), std::abs(f.normal.z)});
             QVERIFY(std::abs(axisAligned - 1.0) < 1e-12);
@@ -307,6 +312,12 @@ private slots:
             disc.push_back(Vec3(5, -3, 2) + 0.1 * std::cos(a) * u + 0.1 * std::sin(a) * v);
         }
         QTest::newRow("tilted disc") << disc << 24;
+        // Thinner than the flat threshold (64 tolerances, here 64 * 6e-11): a slab of slivers is not a useful solid.
+        QList<Vec3> thinDisc = disc;
+        const Vec3 normal = glm::normalize(glm::cross(u, v));
+        for (qsizetype i = 0; i < thinDisc.size(); ++i)
+            thinDisc[i] += (i % 3 == 0 ? 1e-9 : -1e-9) * normal;
+        QTest::newRow("disc 2e-9 thick") << thinDisc << 24;
         QTest::newRow("triangle") << QList<Vec3>{{0, 0, 0}, {2, 0, 0}, {0, 0, 3}, {0.5, 0, 0.5}} << 3;
     }
     void flat() {
@@ -328,7 +339,8 @@ private slots:
         QVERIFY(r.indexMapOk);
         QVERIFY(r.edgesPaired);
         QVERIFY(r.worstOutside <= tol);
-        QVERIFY(r.worstNonPlanar <= tol);
+        // ConvexHull.h: a flat hull's faces lie within its thickness, at most 64 tolerances, of the points.
+        QVERIFY(r.worstNonPlanar <= std::max(tol, 64.0 * hull.tolerance));
         QVERIFY(r.worstReflex <= tol);
         QVERIFY(r.worstNormalError <= 1e-9);
     }

@@ -128,8 +128,8 @@ private:
         static const std::string expected = "an array of " + std::to_string(N) + " numbers";
         if (!v.isArray() || v.asArray().size() != N)
             return v.isArray() ? fail(v, context,
-                                      "'" + std::string(key) + "' must be " + expected + ", not " +
-                                          std::to_string(v.asArray().size()))
+                                      "'" + std::string(key) + "' must be " + expected + "; it has " +
+                                          std::to_string(v.asArray().size()) + " items")
                                : wrongType(v, context, key, expected);
         for (int i = 0; i < N; ++i) {
             const JsonValue& item = v.asArray()[static_cast<size_t>(i)];

@@ -259,7 +259,7 @@ private slots:
         QTest::newRow("substeps fraction") << withWorld("{\"substeps\": 2.5}") << 2 << "whole number";
         QTest::newRow("negative damping") << withWorld("{\"linear_damping\": -1}") << 2 << "must not be negative";
         QTest::newRow("gravity length") << withWorld("{\"gravity\": [0, -9.81]}") << 2
-                                        << "'gravity' must be an array of 3 numbers, not 2";
+                                        << "'gravity' must be an array of 3 numbers; it has 2 items";
         QTest::newRow("gravity item type") << withWorld("{\"gravity\": [0, \"down\", 0]}") << 2 << "item 1 is string";
         QTest::newRow("unknown integrator")
             << withWorld("{\"integrator\": \"leapfrog\"}") << 2 << "unknown integrator 'leapfrog'";

@@ -21,7 +21,7 @@ namespace rl {
 struct RenderOptions {
     bool grid = true;
     float outlineWidthPixels = 2.0f;
-    glm::vec4 outlineColour{1.0f, 0.56f, 0.12f, 1.0f}; // Blender's selection orange
+    glm::vec4 outlineColour{1.0f, 0.56f, 0.12f, 1.0f}; // orange, as selection is in Blender
     glm::vec3 backgroundTop{0.275f, 0.275f, 0.285f};
     glm::vec3 backgroundBottom{0.165f, 0.165f, 0.172f};
 };

@@ -21,9 +21,9 @@ namespace rl {
 namespace {
 // A press that moves less than this is a click; more on the left button starts a box selection.
 constexpr int kClickSlopPixels = 4;
-// One wheel notch (120 eighths of a degree) brings the camera 15% closer, like Blender's default.
+// One wheel notch (120 eighths of a degree) brings the camera 15% closer; touchpads send fractions of a notch.
 constexpr float kZoomPerNotch = 0.85f;
-constexpr float kZoomPerDragPixel = 1.005f;
+constexpr float kZoomPerDragPixel = 1.005f; // Ctrl+middle drag: 140 px down doubles the distance
 } // namespace
 
 Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {

@@ -271,6 +271,13 @@ Result<Bake> readBake(std::string_view text, const std::string& fileName, BakeFi
     std::vector<uint32_t> ids;
     std::vector<float> values; // (columns - 1) per line
     std::vector<int> lineNumbers;
+    {
+        // Sized once from the line count: growing by doubling would briefly hold twice the frames of a large bake.
+        const size_t lines = static_cast<size_t>(std::count(text.begin() + dataStart, text.end(), '\n')) + 1;
+        ids.reserve(lines);
+        lineNumbers.reserve(lines);
+        values.reserve(lines * static_cast<size_t>(columns > 0 ? columns - 1 : 7));
+    }
     int64_t maxId = -1;
     LineCursor data(text, dataStart, dataStartLine);
     while (data.next(line)) {

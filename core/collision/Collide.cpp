@@ -238,7 +238,7 @@ bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, cons
         bool haveNormal = g.coreDistance > 0.0;
         if (!haveNormal) {
             const EpaResult e = epaPenetration(a, xfA, b, xfB, g, options.epa);
-            if (e.status == EpaStatus::Converged) {
+            if (e.status == EpaStatus::Converged || (e.status == EpaStatus::BudgetExceeded && !satAffordable(a, b))) {
                 n = e.normal;
                 pa = e.pointA;
                 pb = e.pointB;

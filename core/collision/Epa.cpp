@@ -81,10 +81,11 @@ EpaResult epaPenetration(const Shape& a, const Transform& xfA, const Shape& b, c
                          const GjkResult& gjk, const EpaOptions& options) {
     EpaResult result;
     const Real radii = a.coreRadius() + b.coreRadius();
-    Polytope poly;
+    // The polytope's storage is kept per thread: an EPA call then allocates nothing once the thread has warmed up.
+    thread_local Polytope poly;
+    poly.verts.clear();
+    poly.faces.clear();
     const int maxFaces = std::max(4, options.maxFaces);
-    poly.verts.reserve(size_t(maxFaces / 2 + 8));
-    poly.faces.reserve(size_t(maxFaces));
     for (int i = 0; i < gjk.simplexCount; ++i)
         poly.verts.push_back(gjk.simplex[i]);
     if (poly.verts.empty())
@@ -185,10 +186,11 @@ EpaResult epaPenetration(const Shape& a, const Transform& xfA, const Shape& b, c
     }
 
     const Real tolerance = std::max(options.relativeTolerance, 1e-15) * scale;
-    std::vector<int> stack;
-    std::vector<char> visible;
-    std::vector<HorizonEdge> horizon;
+    thread_local std::vector<int> stack;
+    thread_local std::vector<char> visible;
+    thread_local std::vector<HorizonEdge> horizon;
     int bestFace = -1;
+    Real upper = std::numeric_limits<Real>::infinity();
     EpaStatus status = EpaStatus::BudgetExceeded;
     int iter = 0;
     const int maxIterations = std::max(1, options.maxIterations);
@@ -207,7 +209,10 @@ EpaResult epaPenetration(const Shape& a, const Transform& xfA, const Shape& b, c
         }
         const EpaFace best = poly.faces[bestFace];
         const SimplexVertex w = support(a, xfA, b, xfB, best.n);
-        if (glm::dot(best.n, w.w) - best.dist <= tolerance) {
+        // Every support distance is an upper bound of the depth and the best face's distance a lower bound;
+        // keeping the smallest upper bound seen lets the search stop as soon as the bracket is tight.
+        upper = std::min(upper, glm::dot(best.n, w.w));
+        if (upper - best.dist <= tolerance) {
             status = EpaStatus::Converged;
             break;
         }

@@ -57,7 +57,8 @@ PenetrationResult signedDistance(const Shape& a, const Transform& xfA, const Sha
     }
     const EpaResult epa = epaPenetration(a, xfA, b, xfB, gjk, options.epa);
     r.epaStatus = epa.status;
-    if (epa.status == EpaStatus::Converged) {
+    if (epa.status == EpaStatus::Converged ||
+        (epa.status == EpaStatus::BudgetExceeded && a.isPolyhedral() && b.isPolyhedral() && !satAffordable(a, b))) {
         r.separation = -epa.depth;
         r.normal = epa.normal;
         r.pointA = epa.pointA;

@@ -20,6 +20,8 @@ struct PenetrationResult {
     Vec3 normal{0.0, 1.0, 0.0}; // unit, from A to B
     Vec3 pointA{0.0};           // witness on A, world: pointB - pointA == separation * normal
     Vec3 pointB{0.0};
+    // Epa with epaStatus BudgetExceeded: EPA ran out of faces on a pair too big for the SAT fallback (see
+    // kSatFallbackMaxEdgePairs); the depth is then EPA's lower bound, a little short of the exact one.
     PenetrationMethod method = PenetrationMethod::Gjk;
     EpaStatus epaStatus = EpaStatus::Converged; // what EPA reported when it ran
 };

@@ -6,17 +6,6 @@
 
 namespace rl {
 
-namespace {
-
-Real supportValue(const std::vector<Vec3>& points, const Vec3& d) {
-    Real best = -std::numeric_limits<Real>::infinity();
-    for (const Vec3& p : points)
-        best = std::max(best, glm::dot(p, d));
-    return best;
-}
-
-} // namespace
-
 void closestPointsSegments(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1, Vec3& onP, Vec3& onQ) {
     const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
     const Real a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
@@ -78,28 +67,47 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
         return r;
     };
 
-    SatResult faceA;
-    faceA.feature = SatFeature::FaceA;
-    for (uint32_t i = 0; i < A.faces.size(); ++i) {
-        const PolyFace& f = A.faces[i];
-        if (A.flat && glm::dot(f.normal, cB - cA) < 0.0)
-            continue;
-        const Vec3 deepest = bv[B.supportIndex(RT * -f.normal)];
-        const Real sep = glm::dot(f.normal, deepest) - f.offset;
-        if (sep > faceA.separation) {
-            faceA.separation = sep;
-            faceA.face = i;
-            faceA.normal = f.normal;
-            if (sep > options.earlyOut)
-                return finish(faceA);
+    // A flat polygon is two-sided, but only its side facing the other shape's centre pushes: every axis must
+    // lean to that side, so a body more than halfway through a thin floor still goes back where it came from.
+    auto facingNormal = [](const std::vector<PolyFace>& faces, const Vec3& towardOther) {
+        return glm::dot(faces[0].normal, towardOther) >= 0.0 ? faces[0].normal : faces[1].normal;
+    };
+    const Vec3 facingA = A.flat ? facingNormal(A.faces, cB - cA) : Vec3(0.0);
+    const Vec3 facingB = B.flat ? R * facingNormal(B.faces, RT * (cA - cB)) : Vec3(0.0);
+    // In-plane axes (the rim) are allowed; the tolerance keeps rounding in the frame change from dropping them.
+    constexpr Real kInPlane = 1e-12;
+    auto allowed = [&](const Vec3& axisAtoB) {
+        return (!A.flat || glm::dot(axisAtoB, facingA) >= -kInPlane) &&
+               (!B.flat || glm::dot(axisAtoB, facingB) <= kInPlane);
+    };
+
+    auto queryFacesA = [&](bool sideRule, SatResult& faceA) {
+        faceA.feature = SatFeature::FaceA;
+        for (uint32_t i = 0; i < A.faces.size(); ++i) {
+            const PolyFace& f = A.faces[i];
+            if (sideRule && !allowed(f.normal))
+                continue;
+            const Vec3 deepest = bv[B.supportIndex(RT * -f.normal)];
+            const Real sep = glm::dot(f.normal, deepest) - f.offset;
+            if (sep > faceA.separation) {
+                faceA.separation = sep;
+                faceA.face = i;
+                faceA.normal = f.normal;
+                if (sep > options.earlyOut)
+                    return true;
+            }
         }
-    }
+        return false;
+    };
+    SatResult faceA;
+    if (queryFacesA(true, faceA))
+        return finish(faceA);
 
     SatResult faceB;
     faceB.feature = SatFeature::FaceB;
     for (uint32_t j = 0; j < B.faces.size(); ++j) {
         const Vec3& n = bn[j];
-        if (B.flat && glm::dot(n, cA - cB) < 0.0)
+        if (!allowed(-n))
             continue;
         const Real offset = glm::dot(n, bv[B.faceVertices[B.faces[j].first]]);
         const Real sep = glm::dot(n, A.support(-n)) - offset;
@@ -114,7 +122,9 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
 
     SatResult edges;
     edges.feature = SatFeature::EdgePair;
-    const bool anyFlat = A.flat || B.flat;
+    // A flat polygon's edge bounds a half circle of the Gauss map (from n through the edge's outward in-plane
+    // normal m to -n). With the side rule only the facing quarter remains, so the edge acts like a solid edge
+    // between a face with normal n and a side face with normal m, and Gregorius' pruning applies unchanged.
     // Per-edge data of B in A's frame, computed once: the two normals of the edge of -B and their cross product,
     // so that the Gauss-map test of a pair costs four dot products.
     struct EdgeData {
@@ -125,51 +135,47 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
     for (size_t ib = 0; ib < B.edges.size(); ++ib) {
         const PolyEdge& eb = B.edges[ib];
         EdgeData& e = be[ib];
-        e.c = -bn[eb.face0];
-        e.d = -bn[eb.face1];
-        e.dxc = glm::cross(e.d, e.c);
         e.q0 = bv[eb.v0];
         e.e2 = bv[eb.v1] - e.q0;
+        if (B.flat) {
+            e.c = -facingB;
+            e.d = -glm::normalize(glm::cross(e.e2, bn[eb.face0]));
+        } else {
+            e.c = -bn[eb.face0];
+            e.d = -bn[eb.face1];
+        }
+        e.dxc = glm::cross(e.d, e.c);
     }
     for (uint32_t ia = 0; ia < A.edges.size(); ++ia) {
         const PolyEdge& ea = A.edges[ia];
         const Vec3& pa0 = A.vertices[ea.v0];
         const Vec3 e1 = A.vertices[ea.v1] - pa0;
-        const Vec3& na = A.faces[ea.face0].normal;
-        const Vec3& nb = A.faces[ea.face1].normal;
+        const Vec3 na = A.flat ? facingA : A.faces[ea.face0].normal;
+        const Vec3 nb = A.flat ? glm::normalize(glm::cross(e1, A.faces[ea.face0].normal)) : A.faces[ea.face1].normal;
         const Vec3 bxa = glm::cross(nb, na);
         const Real len1 = glm::length(e1);
         for (uint32_t ib = 0; ib < be.size(); ++ib) {
             const EdgeData& e = be[ib];
-            if (!anyFlat) {
-                // Do the arcs na-nb (edge of A) and c-d (edge of -B) cross on the Gauss map? Only then is the
-                // pair a face of the Minkowski difference (Gregorius). The last test rejects crossings of the
-                // great circles on the far hemisphere.
-                const Real cba = glm::dot(e.c, bxa);
-                const Real dba = glm::dot(e.d, bxa);
-                const Real adc = glm::dot(na, e.dxc);
-                const Real bdc = glm::dot(nb, e.dxc);
-                if (!(cba * dba < 0.0 && adc * bdc < 0.0 && cba * bdc > 0.0))
-                    continue;
-            }
+            // Do the arcs na-nb (edge of A) and c-d (edge of -B) cross on the Gauss map? Only then is the pair a
+            // face of the Minkowski difference (Gregorius). The last test rejects crossings of the great circles
+            // on the far hemisphere.
+            const Real cba = glm::dot(e.c, bxa);
+            const Real dba = glm::dot(e.d, bxa);
+            const Real adc = glm::dot(na, e.dxc);
+            const Real bdc = glm::dot(nb, e.dxc);
+            if (!(cba * dba < 0.0 && adc * bdc < 0.0 && cba * bdc > 0.0))
+                continue;
             Vec3 axis = glm::cross(e1, e.e2);
             const Real len = glm::length(axis);
             // Parallel edges give no axis of their own; the face axes next to them cover that case.
             if (!(len > 1e-6 * len1 * glm::length(e.e2)))
                 continue;
             axis /= len;
-            Real sep;
-            if (!anyFlat) {
-                if (glm::dot(axis, pa0 - cA) < 0.0)
-                    axis = -axis;
-                sep = glm::dot(axis, e.q0 - pa0);
-            } else {
-                // A flat polygon's edges bound a half circle of the Gauss map, not an arc between two normals,
-                // so no pruning: the axis is oriented towards B and measured with the support functions.
-                if (glm::dot(axis, cB - cA) < 0.0)
-                    axis = -axis;
-                sep = -supportValue(bv, -axis) - supportValue(A.vertices, axis);
-            }
+            // Orient away from A: its centroid is inside it (for a flat A, inside the polygon, and the arc's axes
+            // all lean outward from the edge).
+            if (glm::dot(axis, pa0 - cA) < 0.0)
+                axis = -axis;
+            const Real sep = glm::dot(axis, e.q0 - pa0);
             if (sep > edges.separation) {
                 edges.separation = sep;
                 edges.edgeA = ia;
@@ -183,6 +189,69 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
         }
     }
 
+    // The rim of a flat polygon. With the side rule the polygon acts as if extruded without end away from its
+    // facing side, and that prism has two more kinds of axes: its side faces (the edges' outward in-plane normals)
+    // and its side edges (along n) against the other shape's edges, whose crosses are in-plane axes. Only the other
+    // shape's silhouette edges seen along n can form Minkowski faces with a side edge. These axes are few and are
+    // measured with the support functions, which is exact for any axis.
+    SatResult rim;
+    rim.feature = SatFeature::EdgePair;
+    auto measureRim = [&](const Vec3& u, uint32_t idA, uint32_t idB) {
+        if (!allowed(u))
+            return false;
+        const Vec3 pa = A.support(u);
+        const Vec3 pb = bv[B.supportIndex(RT * -u)];
+        const Real sep = glm::dot(u, pb - pa);
+        if (sep > rim.separation) {
+            rim.separation = sep;
+            rim.normal = u;
+            rim.edgeA = idA;
+            rim.edgeB = idB;
+            rim.pointB = pb;
+            rim.pointA = pb - sep * u;
+            return sep > options.earlyOut;
+        }
+        return false;
+    };
+    // P is the flat polygon, Q the other shape, both in A's frame; sign turns P->Q axes into A->B axes.
+    auto rimQuery = [&](const ConvexPolyhedron& P, const std::vector<Vec3>& pv, const Vec3& n0,
+                        const ConvexPolyhedron& Q, const std::vector<Vec3>& qv, const auto& normalQ, Real sign) {
+        constexpr uint32_t kRimTag = 0x40000000u; // keeps rim ids apart from real edge indices
+        const PolyFace& f = P.faces[0];
+        for (uint32_t k = 0; k < f.count; ++k) {
+            const Vec3& v0 = pv[P.faceVertices[f.first + k]];
+            const Vec3& v1 = pv[P.faceVertices[f.first + (k + 1) % f.count]];
+            const Vec3 m = glm::cross(v1 - v0, n0);
+            const Real len = glm::length(m);
+            if (len > 0.0 && measureRim(sign * m / len, kRimTag + k, kRimTag))
+                return true;
+        }
+        for (uint32_t e = 0; e < Q.edges.size(); ++e) {
+            const PolyEdge& qe = Q.edges[e];
+            if (glm::dot(normalQ(qe.face0), n0) * glm::dot(normalQ(qe.face1), n0) > 0.0)
+                continue;
+            const Vec3 w = glm::cross(n0, qv[qe.v1] - qv[qe.v0]);
+            const Real len = glm::length(w);
+            if (!(len > 0.0))
+                continue;
+            if (measureRim(w / len, kRimTag, kRimTag + e) || measureRim(-w / len, kRimTag, kRimTag + e))
+                return true;
+        }
+        return false;
+    };
+    if (A.flat && rimQuery(
+                      A, A.vertices, A.faces[0].normal, B, bv, [&](uint32_t j) { return bn[j]; }, 1.0))
+        return finish(rim);
+    if (B.flat && rimQuery(
+                      B, bv, bn[0], A, A.vertices, [&](uint32_t j) { return A.faces[j].normal; }, -1.0))
+        return finish(rim);
+
+    if (!std::isfinite(std::max({faceA.separation, faceB.separation, edges.separation, rim.separation}))) {
+        // Two flat polygons whose side rules exclude each other (coplanar and facing the same way): no axis is
+        // left, so drop the rule rather than return nothing.
+        faceA = SatResult{};
+        queryFacesA(false, faceA);
+    }
     SatResult best = faceA;
     if (faceB.separation > best.separation + options.faceBias)
         best = faceB;
@@ -192,6 +261,8 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
         const PolyEdge& eb = B.edges[best.edgeB];
         closestPointsSegments(A.vertices[ea.v0], A.vertices[ea.v1], bv[eb.v0], bv[eb.v1], best.pointA, best.pointB);
     }
+    if (rim.separation > best.separation + options.faceBias)
+        best = rim;
     return finish(best);
 }
 

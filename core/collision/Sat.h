@@ -36,6 +36,15 @@ struct SatResult {
 SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB,
                        const SatOptions& options = {});
 
+// The SAT's edge query visits edgesA * edgesB pairs. Above this many, an EPA that ran out of budget keeps its own
+// bracketed answer (depth between its lower and upper bound) instead of falling back to the quadratic SAT;
+// a degenerate EPA still falls back, whatever the cost, because it has no answer at all.
+inline constexpr size_t kSatFallbackMaxEdgePairs = size_t(1) << 20;
+
+inline bool satAffordable(const Shape& a, const Shape& b) {
+    return a.polyhedron->edges.size() * b.polyhedron->edges.size() <= kSatFallbackMaxEdgePairs;
+}
+
 // Closest points of segments p0-p1 and q0-q1 (Ericson 5.1.9), used for edge contacts.
 void closestPointsSegments(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1, Vec3& onP, Vec3& onQ);
 

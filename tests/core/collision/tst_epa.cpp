@@ -176,6 +176,23 @@ private slots:
         }
     }
 
+    // Two 2,000-vertex hulls almost coincident: every direction is nearly as deep, EPA runs out of faces, and the
+    // pair is too big for the quadratic SAT fallback. The answer is EPA's lower bound; check it against the SAT.
+    void bigPairKeepsEpaBound() {
+        const Shape big = mustShape(makeHull(uvSphereHull(0.5, 37, 54)));
+        const Transform xa = Transform::fromQuat(Vec3(0.0), axisAngle(Vec3(1, 2, 3), 0.3));
+        const Transform xb = Transform::fromQuat(Vec3(0.01, 0.03, -0.02), axisAngle(Vec3(-2, 1, 0), 1.1));
+        QVERIFY(!satAffordable(big, big));
+        const PenetrationResult r = signedDistance(big, xa, big, xb);
+        QCOMPARE(r.method, PenetrationMethod::Epa);
+        QCOMPARE(r.epaStatus, EpaStatus::BudgetExceeded);
+        const SatResult sat = satPolyhedra(big, xa, big, xb);
+        qInfo("EPA lower bound %.6f m, exact %.6f m", -r.separation, -sat.separation);
+        QVERIFY(-r.separation <= -sat.separation + 1e-9);
+        QVERIFY(-r.separation >= 0.99 * -sat.separation);
+        QVERIFY(std::abs(separationAlong(big, xa, big, xb, r.normal) - r.separation) < 0.01 * -sat.separation);
+    }
+
     // EPA with a face budget too small to converge: the result must come from the SAT and still be exact.
     void fallbackOnBudget() {
         const Shape a = mustShape(makeHull(uvSphereHull(1.0, 12, 20)));

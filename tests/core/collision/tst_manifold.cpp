@@ -49,11 +49,6 @@ Real quadAreaY(const Vec3 p[4]) {
     return best;
 }
 
-std::set<Vec3, bool (*)(const Vec3&, const Vec3&)> cornerSet() {
-    return std::set<Vec3, bool (*)(const Vec3&, const Vec3&)>(
-        [](const Vec3& a, const Vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
-}
-
 } // namespace
 
 class TestManifold : public QObject {

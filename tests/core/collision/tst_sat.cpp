@@ -12,14 +12,19 @@ using namespace rl::test;
 namespace {
 
 // Brute force: every face normal and every edge-pair cross product, each measured by support functions.
-Real bruteForceSeparation(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb) {
+// With `facing` set (A flat), only axes leaning to that side count, as the side rule says.
+Real bruteForceSeparation(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb,
+                          const Vec3& facing = Vec3(0.0)) {
     Real best = -std::numeric_limits<Real>::infinity();
     auto measure = [&](Vec3 axis) {
         const Real len = glm::length(axis);
         if (!(len > 1e-9))
             return;
         axis /= len;
-        best = std::max({best, separationAlong(a, xa, b, xb, axis), separationAlong(a, xa, b, xb, -axis)});
+        for (const Vec3& u : {axis, -axis}) {
+            if (glm::dot(u, facing) >= -1e-12) // in-plane axes are allowed; rounding must not drop them
+                best = std::max(best, separationAlong(a, xa, b, xb, u));
+        }
     };
     for (const PolyFace& f : a.polyhedron->faces)
         measure(xa.rotate(f.normal));
@@ -29,6 +34,14 @@ Real bruteForceSeparation(const Shape& a, const Transform& xa, const Shape& b, c
         const Vec3 da = xa.rotate(a.polyhedron->vertices[ea.v1] - a.polyhedron->vertices[ea.v0]);
         for (const PolyEdge& eb : b.polyhedron->edges)
             measure(glm::cross(da, xb.rotate(b.polyhedron->vertices[eb.v1] - b.polyhedron->vertices[eb.v0])));
+        // A flat A behaves as its polygon extruded away from the facing side: that prism's side faces and side
+        // edges (along the facing normal) add in-plane axes.
+        if (glm::dot(facing, facing) > 0.0)
+            measure(glm::cross(da, facing));
+    }
+    if (glm::dot(facing, facing) > 0.0) {
+        for (const PolyEdge& eb : b.polyhedron->edges)
+            measure(glm::cross(facing, xb.rotate(b.polyhedron->vertices[eb.v1] - b.polyhedron->vertices[eb.v0])));
     }
     return best;
 }
@@ -64,6 +77,44 @@ private slots:
         qInfo("worst difference to brute force %.3g m; %d of 3000 pairs decided by an edge pair", worst, edgeWins);
         QVERIFY(worst < 1e-9);
         QVERIFY(edgeWins > 100); // the edge query is really exercised
+    }
+
+    // Flat polygons against hulls: the pruned query with the side rule equals the brute force over the axes
+    // that lean to the polygon's facing side.
+    void flatPolygonsAgainstBruteForce() {
+        std::mt19937_64 rng(123);
+        std::uniform_real_distribution<Real> u(-1.0, 1.0);
+        Real worst = 0.0;
+        int overlapping = 0;
+        for (int i = 0; i < 2000; ++i) {
+            std::vector<Vec3> polygon;
+            const int sides = 3 + int(rng() % 6);
+            for (int k = 0; k < sides; ++k)
+                polygon.push_back({std::cos(2 * kPi * k / sides), 0.0, std::sin(2 * kPi * k / sides)});
+            const Shape flat = mustShape(makeHull(flatPolygonHull(polygon, Vec3(0, 1, 0))));
+            const Shape b = randomPolyhedron(rng);
+            const Transform xa = Transform::fromQuat(Vec3(0.0), randomRotation(rng));
+            const Transform xb = Transform::fromQuat(Vec3(u(rng), u(rng), u(rng)) * 1.2, randomRotation(rng));
+            const Vec3 n = xa.rotate(Vec3(0, 1, 0));
+            const Vec3 facing = glm::dot(n, xb.apply(b.centre()) - xa.position) >= 0.0 ? n : -n;
+            const SatResult sat = satPolyhedra(flat, xa, b, xb);
+            const Real brute = bruteForceSeparation(flat, xa, b, xb, facing);
+            if ((sat.separation > 0.0) != (brute > 0.0))
+                qWarning("pair %d: sat %.17g (feature %d) brute %.17g", i, sat.separation, int(sat.feature), brute);
+            QCOMPARE(sat.separation > 0.0, brute > 0.0);
+            QVERIFY(glm::dot(sat.normal, facing) >= -1e-12);
+            // The flat shape as B gives the same answer.
+            const SatResult reversed = satPolyhedra(b, xb, flat, xa);
+            QVERIFY(std::abs(reversed.separation - sat.separation) < 1e-9);
+            QVERIFY(glm::dot(reversed.normal, facing) <= 1e-12);
+            if (brute <= 0.0) {
+                ++overlapping;
+                worst = std::max(worst, std::abs(sat.separation - brute));
+            }
+        }
+        qInfo("%d overlapping flat-hull pairs, worst difference %.3g m", overlapping, worst);
+        QVERIFY(overlapping > 500);
+        QVERIFY(worst < 1e-9);
     }
 
     // With an early out the SAT stops at the first separating axis, which still proves separation.

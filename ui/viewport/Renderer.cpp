@@ -87,12 +87,15 @@ bool Renderer::initialize() {
     }
     glGenVertexArrays(1, &m_emptyVao);
     glGenBuffers(1, &m_instanceBuffer);
+    glGenBuffers(1, &m_selectionBuffer);
     m_instanceBufferCapacity = 0;
+    m_selectionBufferCapacity = 0;
     glGenTextures(1, &m_overlayTexture);
     m_overlayKey = 0;
     // A new context has none of the old buffers: upload everything again.
     m_meshesDirty = true;
     m_instancesDirty = true;
+    m_selectionDirty = true;
     m_initialized = true;
     return true;
 }
@@ -102,6 +105,9 @@ void Renderer::release() {
         return;
     releaseMeshes();
     glDeleteBuffers(1, &m_instanceBuffer);
+    glDeleteBuffers(1, &m_selectionBuffer);
+    m_selectionBuffer = 0;
+    m_selectionBufferCapacity = 0;
     glDeleteVertexArrays(1, &m_emptyVao);
     glDeleteTextures(1, &m_overlayTexture);
     m_overlayTexture = 0;
@@ -160,7 +166,6 @@ void Renderer::setScene(const ViewportScene& scene) {
 }
 
 void Renderer::setInstanceAttributes(const ViewportScene& scene) {
-    m_anySelected = false;
     const size_t count = std::min(scene.instances.size(), m_slotOfInstance.size());
     for (size_t i = 0; i < count; ++i) {
         const int slot = m_slotOfInstance[i];
@@ -169,10 +174,29 @@ void Renderer::setInstanceAttributes(const ViewportScene& scene) {
         const ViewportInstance& inst = scene.instances[i];
         m_instances[slot].model = inst.model;
         m_instances[slot].colourFlags = glm::vec4(inst.colour, static_cast<float>(inst.flags));
-        if ((inst.flags & kInstanceSelected) && !(inst.flags & kInstanceHidden))
-            m_anySelected = true;
     }
     m_instancesDirty = true;
+    gatherSelection();
+}
+
+void Renderer::gatherSelection() {
+    // The outline passes draw only these copies, so a few selected bodies among 5,000 cost a few instances.
+    m_selectedSlots.clear();
+    m_selectedRanges.assign(m_ranges.size(), SelectionRange{});
+    for (size_t m = 0; m < m_ranges.size(); ++m) {
+        m_selectedRanges[m].first = static_cast<int>(m_selectedSlots.size());
+        const MeshRange& range = m_ranges[m];
+        for (int slot = range.firstInstance; slot < range.firstInstance + range.instanceCount; ++slot) {
+            const auto flags = static_cast<uint32_t>(m_instances[slot].colourFlags.a);
+            if ((flags & kInstanceSelected) && !(flags & kInstanceHidden))
+                m_selectedSlots.push_back(slot);
+        }
+        m_selectedRanges[m].count = static_cast<int>(m_selectedSlots.size()) - m_selectedRanges[m].first;
+    }
+    m_selected.resize(m_selectedSlots.size());
+    for (size_t k = 0; k < m_selectedSlots.size(); ++k)
+        m_selected[k] = m_instances[m_selectedSlots[k]];
+    m_selectionDirty = true;
 }
 
 void Renderer::setTransforms(std::span<const glm::mat4> models) {
@@ -183,6 +207,9 @@ void Renderer::setTransforms(std::span<const glm::mat4> models) {
             m_instances[slot].model = models[i];
     }
     m_instancesDirty = true;
+    for (size_t k = 0; k < m_selectedSlots.size(); ++k)
+        m_selected[k].model = m_instances[m_selectedSlots[k]].model;
+    m_selectionDirty = !m_selectedSlots.empty();
 }
 
 void Renderer::uploadMeshes() {
@@ -215,17 +242,17 @@ void Renderer::uploadMeshes() {
     m_meshesDirty = false;
 }
 
-void Renderer::uploadInstances() {
-    glBindBuffer(GL_ARRAY_BUFFER, m_instanceBuffer);
-    const size_t bytes = m_instances.size() * sizeof(InstanceData);
-    if (bytes > m_instanceBufferCapacity || bytes < m_instanceBufferCapacity / 4) {
-        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), m_instances.data(), GL_DYNAMIC_DRAW);
-        m_instanceBufferCapacity = bytes;
+void Renderer::uploadInstances(unsigned buffer, size_t& capacity, const std::vector<InstanceData>& data) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    const size_t bytes = data.size() * sizeof(InstanceData);
+    // Re-allocate when growing or when far too big; otherwise overwrite in place.
+    if (bytes > capacity || bytes < capacity / 4) {
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), data.data(), GL_DYNAMIC_DRAW);
+        capacity = bytes;
     } else if (bytes > 0) {
-        glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(bytes), m_instances.data());
+        glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(bytes), data.data());
     }
     glBindBuffer(GL_ARRAY_BUFFER, 0);
-    m_instancesDirty = false;
 }
 
 void Renderer::drawMeshes(QOpenGLShaderProgram& program, bool outlinePass) {
@@ -233,7 +260,9 @@ void Renderer::drawMeshes(QOpenGLShaderProgram& program, bool outlinePass) {
     for (size_t m = 0; m < m_meshGl.size() && m < m_ranges.size(); ++m) {
         const MeshRange& range = m_ranges[m];
         const MeshGl& gl = m_meshGl[m];
-        if (range.instanceCount == 0 || gl.indexCount == 0)
+        const int first = outlinePass ? m_selectedRanges[m].first : range.firstInstance;
+        const int instanceCount = outlinePass ? m_selectedRanges[m].count : range.instanceCount;
+        if (instanceCount == 0 || gl.indexCount == 0)
             continue;
         if (outlinePass) {
             setUniform(program, "uMeshCentre", range.centre);
@@ -247,14 +276,14 @@ void Renderer::drawMeshes(QOpenGLShaderProgram& program, bool outlinePass) {
             glDisable(GL_CULL_FACE);
         glBindVertexArray(gl.vao);
         // The instance attributes start at this mesh's range: GL 3.3 has no base-instance draw.
-        glBindBuffer(GL_ARRAY_BUFFER, m_instanceBuffer);
-        const auto base = static_cast<size_t>(range.firstInstance) * stride;
+        glBindBuffer(GL_ARRAY_BUFFER, outlinePass ? m_selectionBuffer : m_instanceBuffer);
+        const auto base = static_cast<size_t>(first) * stride;
         for (GLuint column = 0; column < 4; ++column)
             glVertexAttribPointer(kModelLocation + column, 4, GL_FLOAT, GL_FALSE, stride,
                                   reinterpret_cast<const void*>(base + column * sizeof(glm::vec4)));
         glVertexAttribPointer(kColourFlagsLocation, 4, GL_FLOAT, GL_FALSE, stride,
                               reinterpret_cast<const void*>(base + offsetof(InstanceData, colourFlags)));
-        glDrawElementsInstanced(GL_TRIANGLES, gl.indexCount, GL_UNSIGNED_INT, nullptr, range.instanceCount);
+        glDrawElementsInstanced(GL_TRIANGLES, gl.indexCount, GL_UNSIGNED_INT, nullptr, instanceCount);
         ++m_drawCalls;
     }
     glBindVertexArray(0);
@@ -268,8 +297,14 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
         return;
     if (m_meshesDirty)
         uploadMeshes();
-    if (m_instancesDirty)
-        uploadInstances();
+    if (m_instancesDirty) {
+        uploadInstances(m_instanceBuffer, m_instanceBufferCapacity, m_instances);
+        m_instancesDirty = false;
+    }
+    if (m_selectionDirty) {
+        uploadInstances(m_selectionBuffer, m_selectionBufferCapacity, m_selected);
+        m_selectionDirty = false;
+    }
 
     const glm::mat4 viewProjection = camera.viewProjection();
     const glm::vec3 eye = camera.eye();
@@ -340,7 +375,7 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
 
     // Selection outline. Pass 1 marks the selected objects in the stencil; pass 2 draws them pushed outwards in
     // screen space where the stencil is clear, which leaves a ring of constant width around each silhouette.
-    if (m_anySelected && options.outlineWidthPixels > 0.0f) {
+    if (!m_selected.empty() && options.outlineWidthPixels > 0.0f) {
         glEnable(GL_STENCIL_TEST);
         m_outlineProgram->bind();
         setUniform(*m_outlineProgram, "uViewProjection", viewProjection);

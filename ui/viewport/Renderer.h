@@ -76,7 +76,13 @@ private:
     };
 
     void uploadMeshes();
-    void uploadInstances();
+    struct SelectionRange {
+        int first = 0; // into m_selected
+        int count = 0;
+    };
+
+    void uploadInstances(unsigned buffer, size_t& capacity, const std::vector<InstanceData>& data);
+    void gatherSelection();
     void drawMeshes(QOpenGLShaderProgram& program, bool outlinePass);
     void releaseMeshes();
 
@@ -99,7 +105,12 @@ private:
     std::vector<int> m_slotOfInstance;     // instance index -> position in m_instances, -1 when not drawn
     bool m_meshesDirty = false;
     bool m_instancesDirty = false;
-    bool m_anySelected = false;
+    std::vector<InstanceData> m_selected; // copies of the selected instances, grouped by mesh, for the outline
+    std::vector<int> m_selectedSlots;     // where each copy comes from in m_instances
+    std::vector<SelectionRange> m_selectedRanges;
+    unsigned m_selectionBuffer = 0;
+    size_t m_selectionBufferCapacity = 0;
+    bool m_selectionDirty = false;
     int m_drawCalls = 0;
 };
 

@@ -385,6 +385,8 @@ private:
             if (peek() != '"')
                 return fail("expected a string key");
             const size_t keyPos = m_pos;
+            const int keyLine = m_line;
+            const int keyColumn = static_cast<int>(keyPos - m_lineStart) + 1;
             std::string key;
             if (!parseString(key))
                 return false;
@@ -405,7 +407,7 @@ private:
                 return fail("expected ':' after key '" + key + "'");
             ++m_pos;
             skipWhitespace();
-            members.push_back(JsonMember{std::move(key), JsonValue()});
+            members.push_back(JsonMember{std::move(key), JsonValue(), keyLine, keyColumn});
             if (!parseValue(members.back().value, depth))
                 return false;
             skipWhitespace();

@@ -79,7 +79,10 @@ private:
 struct JsonMember {
     std::string key;
     JsonValue value;
-    bool operator==(const JsonMember&) const = default;
+    int line = 0; // where the key stood in the parsed text (1-based), so that "unknown key" points at the key
+    int column = 0;
+    // Positions are ignored, as for JsonValue.
+    bool operator==(const JsonMember& other) const { return key == other.key && value == other.value; }
 };
 
 inline JsonValue::JsonValue() = default;

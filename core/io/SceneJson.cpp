@@ -66,7 +66,11 @@ private:
     }
 
     bool unknownKey(const JsonMember& m, const std::string& context, std::string_view expected) {
-        return fail(m.value, context, "unknown key '" + m.key + "' (expected " + std::string(expected) + ")");
+        m_error =
+            Error{m_path, m.line, {}, "unknown key '" + m.key + "' (expected " + std::string(expected) + ")", m.column};
+        if (!context.empty())
+            m_error.message = context + ": " + m_error.message;
+        return false;
     }
 
     bool readNumber(const JsonValue& v, const std::string& context, std::string_view key, double& out) {

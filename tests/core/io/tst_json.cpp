@@ -125,6 +125,8 @@ private slots:
         QCOMPARE(a.column(), 8);
         QCOMPARE(a.asArray()[1].line(), 3);
         QCOMPARE(a.asArray()[1].column(), 5);
+        QCOMPARE(v->asObject()[0].line, 2);
+        QCOMPARE(v->asObject()[0].column, 3);
     }
 
     void stringEscapes_data() {

@@ -340,6 +340,15 @@ private slots:
         QVERIFY2(s.find(message.toStdString()) != std::string::npos, s.c_str());
     }
 
+    // The column is the key's, not its value's, so that an editor jumps to the misspelt word.
+    void unknownKeyPointsAtTheKey() {
+        const std::string body = "{\"name\": \"Shot\", " + kBox + ", \"velocty\": [1, 0, 0]}";
+        Result<Scene> scene = readSceneJson(withBodies({body}), "scene.rlscene");
+        QVERIFY(!scene.ok());
+        QCOMPARE(scene.error().line, 3);
+        QCOMPARE(scene.error().column, int(body.find("\"velocty\"")) + 1);
+    }
+
     void missingFileIsAnError() {
         Result<Scene> scene = readSceneFile("/nonexistent/dir/x.rlscene");
         QVERIFY(!scene.ok());

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -25,7 +26,9 @@ public:
     JsonValue(std::nullptr_t);
     JsonValue(bool value);
     JsonValue(double value);
-    JsonValue(int value);
+    // Any integer (counts, indices, sizes) becomes a number; integers beyond 2^53 lose their low bits, as in JSON.
+    template <class T>
+    requires(std::is_integral_v<T> && !std::is_same_v<T, bool>) JsonValue(T value);
     JsonValue(std::string value);
     JsonValue(std::string_view value);
     JsonValue(const char* value);
@@ -89,7 +92,9 @@ inline JsonValue::JsonValue() = default;
 inline JsonValue::JsonValue(std::nullptr_t) {}
 inline JsonValue::JsonValue(bool value) : m_data(value) {}
 inline JsonValue::JsonValue(double value) : m_data(value) {}
-inline JsonValue::JsonValue(int value) : m_data(static_cast<double>(value)) {}
+template <class T>
+requires(std::is_integral_v<T> && !std::is_same_v<T, bool>) inline JsonValue::JsonValue(T value)
+    : m_data(static_cast<double>(value)) {}
 inline JsonValue::JsonValue(std::string value) : m_data(std::move(value)) {}
 inline JsonValue::JsonValue(std::string_view value) : m_data(std::string(value)) {}
 inline JsonValue::JsonValue(const char* value) : m_data(std::string(value)) {}

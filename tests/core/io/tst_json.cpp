@@ -264,6 +264,15 @@ private slots:
         QVERIFY(*back == root);
     }
 
+    void integersOfEveryWidth() {
+        JsonValue v = JsonValue::array();
+        v.push(size_t(644));
+        v.push(int64_t(-5));
+        v.push(uint8_t(7));
+        v.push(true);
+        QCOMPARE(writeJson(v, 0), std::string("[644,-5,7,true]"));
+    }
+
     void byteOrderMarkIsSkipped() {
         Result<JsonValue> v = parseJson("\xEF\xBB\xBF{\"a\": 1}");
         QVERIFY(v.ok());

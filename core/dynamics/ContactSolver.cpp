@@ -36,6 +36,15 @@ Vec3 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec3& rA, 
 
 } // namespace
 
+Softness softness(Real omega, Real zeta, Real h) {
+    // Soft constraint as an implicit-Euler damped spring (Catto, "Solver2D", 2024): with a1 = 2 zeta + h omega,
+    // the bias rate is omega / a1, and the mass and impulse scales blend the rigid answer with the spring's.
+    const Real a1 = 2.0 * zeta + h * omega;
+    const Real a2 = h * omega * a1;
+    const Real a3 = 1.0 / (1.0 + a2);
+    return {omega / a1, a2 * a3, a3};
+}
+
 void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const uint32_t> solverIndexA,
                             std::span<const uint32_t> solverIndexB, std::span<const Real> friction,
                             std::span<const Real> restitution, std::span<const SolverBody> bodies,
@@ -44,13 +53,7 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
     m_inverseH = h > 0.0 ? 1.0 / h : 0.0;
     // Soft constraint as a damped spring (Catto, "Solver2D" 2024): omega = 2 pi f, and with zeta the damping ratio
     // the implicit-Euler spring gives bias rate omega / (2 zeta + h omega) and a mass scale below 1.
-    const Real omega = 2.0 * kPi * settings.contactHertz;
-    const Real a1 = 2.0 * settings.dampingRatio + h * omega;
-    const Real a2 = h * omega * a1;
-    const Real a3 = 1.0 / (1.0 + a2);
-    m_biasRate = omega / a1;
-    m_massScale = a2 * a3;
-    m_impulseScale = a3;
+    m_soft = softness(2.0 * kPi * settings.contactHertz, settings.dampingRatio, h);
 
     m_constraints.resize(manifolds.size());
     for (size_t i = 0; i < manifolds.size(); ++i) {
@@ -76,6 +79,7 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
             p.tangentMass[0] = effectiveMass(a, b, p.rA, p.rB, c.tangent[0]);
             p.tangentMass[1] = effectiveMass(a, b, p.rA, p.rB, c.tangent[1]);
             p.normalImpulse = settings.warmStarting ? mp.normalImpulse : 0.0;
+
             p.tangentImpulse[0] = settings.warmStarting ? mp.tangentImpulse[0] : 0.0;
             p.tangentImpulse[1] = settings.warmStarting ? mp.tangentImpulse[1] : 0.0;
             p.maxNormalImpulse = 0.0;
@@ -116,9 +120,9 @@ void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
                 // Speculative: allow the gap to close exactly within this substep.
                 velocityBias = s * m_inverseH;
             } else if (useBias) {
-                velocityBias = std::max(m_biasRate * s, -m_settings.maxPushoutSpeed);
-                massScale = m_massScale;
-                impulseScale = m_impulseScale;
+                velocityBias = std::max(m_soft.biasRate * s, -m_settings.maxPushoutSpeed);
+                massScale = m_soft.massScale;
+                impulseScale = m_soft.impulseScale;
             }
             const Real vn = glm::dot(c.normal, relativeVelocity(a, b, p.rA, p.rB));
             Real impulse = -p.normalMass * massScale * (vn + velocityBias) - impulseScale * p.normalImpulse;

@@ -23,9 +23,19 @@ struct SolverBody {
     Mat3 invInertia{0.0};        // world axes, taken at the start of the step
 };
 
+// Coefficients of a soft constraint for one substep length (see softness()).
+struct Softness {
+    Real biasRate = 0.0;     // 1/s: velocity bias per metre of overlap
+    Real massScale = 1.0;    // fraction of the rigid impulse applied
+    Real impulseScale = 0.0; // fraction of the accumulated impulse relaxed away
+};
+Softness softness(Real omega, Real dampingRatio, Real h);
+
 struct ContactSolverSettings {
-    // Contact stiffness as a frequency: stiff enough to hold stacks, soft enough to stay stable at the substep rate.
-    // Box2D v3 uses 30 Hz with a damping ratio of 10 (heavily over-damped, so contacts do not ring).
+    // Contact stiffness as a frequency. A soft contact under a load F settles F / (m_eff * omega^2) deep, so
+    // stiffer is better for stacks, but above about a quarter of the substep rate the spring stops being resolved.
+    // The world sets a quarter of the substep rate (Box2D v3's cap); the damping ratio of 10 is Box2D's
+    // (heavily over-damped, so contacts do not ring).
     Real contactHertz = 30.0;
     Real dampingRatio = 10.0;
     // Overlap is pushed apart no faster than this (m/s). It bounds how violently deeply overlapping bodies separate.
@@ -89,8 +99,7 @@ private:
     std::vector<ContactConstraint> m_constraints;
     ContactSolverSettings m_settings;
     Real m_inverseH = 0.0;
-    // Soft constraint coefficients for the substep (see prepare()).
-    Real m_biasRate = 0.0, m_massScale = 1.0, m_impulseScale = 0.0;
+    Softness m_soft;
     ContactSolverCounters m_counters;
 };
 

@@ -40,8 +40,10 @@ struct EffectsSetting {
 struct WorldSettings {
     Vec3 gravity{0.0, -9.81, 0.0}; // m/s^2
     Real fps = 60.0;               // frames per second; one step per frame
-    int substeps = 4;              // solver substeps per step
-    int iterations = 1;            // velocity iterations per substep
+    // Defaults chosen so that every hard case of tests/stability passes at 60 Hz (measured: 4 substeps x 1
+    // iteration topples the 20-cube tower; 8 x 2 holds towers, pyramids, the card house and Jenga).
+    int substeps = 8;   // solver substeps per step
+    int iterations = 2; // velocity iterations per substep
     Integrator integrator = Integrator::SymplecticEuler;
     EffectsSetting effects;
     Real linearDamping = 0.0;  // 1/s

@@ -165,6 +165,7 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
     w.m_gravity = fx.has(Effect::Gravity) ? g : Vec3(0.0);
     if (fx.has(Effect::Damping))
         w.m_damping = Damping{ws.linearDamping, ws.angularDamping};
+    w.m_solverSettings.contactHertz = 0.25 * w.m_fps * w.m_substeps;
     w.m_solverSettings.friction = fx.has(Effect::Friction);
     w.m_solverSettings.restitution = fx.has(Effect::Restitution);
 

@@ -1,0 +1,38 @@
+// Named scenes written once and reused by the stability tests, the benchmarks (rigidlab-cli bench) and the samples:
+// towers, pyramids, mass ratios, card houses, slopes, drops, tumbling bodies and projectiles.
+#pragma once
+
+#include "scene/Scene.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rl::scenes {
+
+// A 40 x 1 x 40 m anchor box whose top face is y = 0.
+BodyDef floorBox(const std::string& name = "Floor");
+
+Scene stack(int cubes);                                 // unit cubes stacked exactly touching on the floor
+Scene pyramid(int base);                                // 2D pyramid of unit cubes: base + (base-1) + ... + 1
+Scene massRatio(Real light = 1.0, Real heavy = 1000.0); // a heavy cube resting on a light one (0.5 m cubes)
+Scene slabOnTwoCubes();                                 // 20 x 1 x 20 m slab on two unit cubes
+Scene cardHouse(int levels = 5, Real friction = 0.7);   // 2 mm x 0.4 m cards: 5 levels = 40 cards
+Scene jenga(int layers = 30);                           // three 0.75 x 0.15 x 0.25 m blocks per layer, crossed
+Scene slope(Real degrees, Real friction);               // a block resting on an inclined anchor; body 1 is the block
+Scene drop(Real height, Real restitution); // a sphere of radius 0.1 m whose bottom starts `height` above the floor
+Scene tumbling(int axis, Real spin = 4.0); // a T-handle hull spun about principal axis 0, 1 or 2; no gravity
+Scene randomBoxes(int count, unsigned seed = 1); // boxes of random size and orientation dropped on a floor
+Scene coincidentBoxes();                         // two identical boxes in the same place
+Scene busy(unsigned seed = 7);                   // mixed spheres and boxes, restitution and friction, inside walls
+Scene bullet(Real offset, Real speed = 300.0);   // a 0.1 m cube shot at a 5 cm anchor wall; offset shifts the start
+Scene spinningPlank(Real spin = 50.0);           // a thin plank spinning at `spin` rad/s, moving towards a thin wall
+Scene scalingGrid(int count);                    // `count` cubes on a floor in a grid, some resting, some falling
+
+// Names for rigidlab-cli bench: "stack20", "pyramid20", "large_pyramid", "boxes1000", "scale1k", "scale4k", "scale16k"
+// ... (see names()).
+std::vector<std::string> names();
+std::optional<Scene> byName(std::string_view name);
+
+} // namespace rl::scenes

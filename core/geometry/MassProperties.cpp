@@ -25,6 +25,10 @@ Mat3 inertiaFromCovariance(const Mat3& c) {
     return Mat3(trace) - c;
 }
 
+bool finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
 bool allFinite(const Mat3& m) {
     for (int c = 0; c < 3; ++c)
         for (int r = 0; r < 3; ++r)
@@ -50,6 +54,8 @@ MassProperties polyhedronMassProperties(std::span<const Vec3> vertices,
     for (const auto& tri : triangles) {
         if (tri[0] >= vertices.size() || tri[1] >= vertices.size() || tri[2] >= vertices.size())
             continue; // bad indices are skipped, never read
+        if (!finite(vertices[tri[0]]) || !finite(vertices[tri[1]]) || !finite(vertices[tri[2]]))
+            continue; // a non-finite corner would turn every sum into NaN
         if (!haveRef) {
             ref = vertices[tri[0]];
             haveRef = true;
@@ -86,7 +92,7 @@ MassProperties polyhedronMassProperties(std::span<const Vec3> vertices,
     Real scale2 = 0.0;
     for (const auto& tri : triangles) {
         for (uint32_t i : tri) {
-            if (i < vertices.size())
+            if (i < vertices.size() && finite(vertices[i]))
                 scale2 = std::max(scale2, glm::dot(vertices[i] - ref, vertices[i] - ref));
         }
     }
@@ -156,6 +162,12 @@ Mat3 rotateInertia(const Mat3& inertia, const Mat3& rotation) {
 }
 
 void principalAxes(const Mat3& inertia, Vec3& moments, Mat3& axes) {
+    if (!allFinite(inertia)) {
+        // Nothing meaningful to diagonalise; a neutral answer keeps NaN out of the caller's state.
+        moments = Vec3(0.0);
+        axes = Mat3(1.0);
+        return;
+    }
     // Symmetrise first: callers may pass a tensor with rounding asymmetry.
     Real a[3][3];
     for (int r = 0; r < 3; ++r)

@@ -217,7 +217,8 @@ Real closedMeshVolume(std::span<const Vec3> vertices, std::span<const std::array
     bool haveRef = false;
     Vec3 ref(0.0);
     for (const auto& t : triangles) {
-        if (!validTriangle(vertices.size(), t))
+        if (!validTriangle(vertices.size(), t) || !finite(vertices[t[0]]) || !finite(vertices[t[1]]) ||
+            !finite(vertices[t[2]]))
             continue;
         if (!haveRef) {
             // Relative to a mesh vertex, so that far-away meshes do not lose their volume to cancellation.

@@ -387,6 +387,19 @@ private slots:
         const Triangles one{tris[0]};
         const MassProperties open = polyhedronMassProperties(v, one);
         QVERIFY(std::isfinite(open.volume) && std::isfinite(open.centroid.x) && std::isfinite(maxAbs(open.inertia)));
+        // A non-finite vertex: its triangles are skipped, nothing non-finite comes out.
+        std::vector<Vec3> withNan = v;
+        withNan.push_back(Vec3(std::nan(""), 0.0, 0.0));
+        Triangles nanTris = tris;
+        nanTris.push_back({0, 1, static_cast<uint32_t>(withNan.size() - 1)});
+        const MassProperties nanProps = polyhedronMassProperties(withNan, nanTris);
+        QVERIFY(std::abs(nanProps.volume - out.volume) <= kRelTol * out.volume);
+        QVERIFY(std::isfinite(nanProps.area) && std::isfinite(maxAbs(nanProps.inertia)));
+        Vec3 moments(7.0);
+        Mat3 axes(0.0);
+        principalAxes(Mat3(std::nan("")), moments, axes);
+        QCOMPARE(moments, Vec3(0.0));
+        QCOMPARE(axes, Mat3(1.0));
         const MassProperties empty = hullMassProperties(ConvexHull{});
         QCOMPARE(empty.volume, 0.0);
         QCOMPARE(empty.area, 0.0);

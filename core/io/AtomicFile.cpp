@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <filesystem>
 #include <streambuf>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -88,11 +89,13 @@ private:
 struct AtomicFileWriter::Impl {
     int fd = -1;
     std::string tempPath;
+    std::string targetPath; // the path given, or the file a symbolic link there points to
     FdStreamBuf buffer;
     std::ostream stream;
 
-    Impl(int descriptor, std::string temp)
-        : fd(descriptor), tempPath(std::move(temp)), buffer(descriptor), stream(&buffer) {}
+    Impl(int descriptor, std::string temp, std::string target)
+        : fd(descriptor), tempPath(std::move(temp)), targetPath(std::move(target)), buffer(descriptor),
+          stream(&buffer) {}
 };
 
 AtomicFileWriter::AtomicFileWriter(std::string path) : m_path(std::move(path)) {}
@@ -105,7 +108,17 @@ Status AtomicFileWriter::open() {
     discard();
     if (m_path.empty() || m_path.back() == '/')
         return fileError(m_path, "not a file name");
-    const std::string dir = directoryOf(m_path);
+    // Writing through a symbolic link replaces the file it points to and keeps the link, as editors do. A dangling
+    // link is replaced itself.
+    std::string target = m_path;
+    struct stat linkInfo {};
+    if (::lstat(m_path.c_str(), &linkInfo) == 0 && S_ISLNK(linkInfo.st_mode)) {
+        std::error_code ec;
+        const std::filesystem::path resolved = std::filesystem::canonical(m_path, ec);
+        if (!ec)
+            target = resolved.string();
+    }
+    const std::string dir = directoryOf(target);
     struct stat dirInfo {};
     if (::stat(dir.c_str(), &dirInfo) != 0)
         return fileError(m_path, "cannot write: directory '" + dir + "': " + errnoText(errno));
@@ -115,8 +128,8 @@ Status AtomicFileWriter::open() {
     // The temporary file lives in the target's directory so that rename() never crosses file systems. A process-wide
     // counter plus the pid keeps concurrent writers apart; O_EXCL guarantees we never reuse someone else's file.
     static std::atomic<unsigned> counter{0};
-    const std::string prefix = (dir == "." && m_path.find('/') == std::string::npos ? std::string() : dir + "/") + "." +
-                               baseNameOf(m_path) + ".tmp-" + std::to_string(::getpid()) + "-";
+    const std::string prefix = (dir == "." && target.find('/') == std::string::npos ? std::string() : dir + "/") + "." +
+                               baseNameOf(target) + ".tmp-" + std::to_string(::getpid()) + "-";
     constexpr int kAttempts = 64;
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
         std::string temp = prefix + std::to_string(counter.fetch_add(1));
@@ -129,9 +142,9 @@ Status AtomicFileWriter::open() {
         }
         // Replacing a file keeps its permissions, as an editor's save would.
         struct stat old {};
-        if (::stat(m_path.c_str(), &old) == 0 && S_ISREG(old.st_mode))
+        if (::stat(target.c_str(), &old) == 0 && S_ISREG(old.st_mode))
             ::fchmod(fd, old.st_mode & 07777);
-        m_impl = std::make_unique<Impl>(fd, std::move(temp));
+        m_impl = std::make_unique<Impl>(fd, std::move(temp), std::move(target));
         return Ok{};
     }
     return fileError(m_path, "cannot create a temporary file in '" + dir + "': too many attempts");
@@ -157,13 +170,13 @@ Status AtomicFileWriter::commit() {
         discard();
         return fileError(m_path, "cannot write: " + errnoText(err));
     }
-    if (::rename(m_impl->tempPath.c_str(), m_path.c_str()) != 0) {
+    if (::rename(m_impl->tempPath.c_str(), m_impl->targetPath.c_str()) != 0) {
         err = errno;
         discard();
         return fileError(m_path, "cannot replace the file: " + errnoText(err));
     }
     // Make the rename itself durable; failing to sync a directory does not undo a completed write.
-    const int dirFd = ::open(directoryOf(m_path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    const int dirFd = ::open(directoryOf(m_impl->targetPath).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (dirFd >= 0) {
         ::fsync(dirFd);
         ::close(dirFd);

@@ -2,6 +2,8 @@
 #include "io/AtomicFile.h"
 
 #include <QDir>
+#include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -69,6 +71,21 @@ private slots:
         QVERIFY(s.error().message.find("cancelled") != std::string::npos);
         QCOMPARE(slurp(path), old);
         QCOMPARE(entries(dir), QStringList{"scene.bake"});
+    }
+
+    // Saving through a symbolic link updates the file it points to; the link stays a link.
+    void writesThroughSymbolicLink() {
+        QTemporaryDir dir;
+        QVERIFY(QDir(dir.path()).mkdir("real"));
+        const std::string real = dir.filePath("real/data.txt").toStdString();
+        const std::string link = dir.filePath("link.txt").toStdString();
+        QVERIFY(writeFileAtomically(real, std::string_view("before")).ok());
+        QVERIFY(QFile::link(QString::fromStdString(real), QString::fromStdString(link)));
+        QVERIFY(writeFileAtomically(link, std::string_view("after")).ok());
+        QVERIFY(QFileInfo(QString::fromStdString(link)).isSymLink());
+        QCOMPARE(slurp(real), std::string("after"));
+        QCOMPARE(entries(dir), QStringList{"link.txt"});
+        QCOMPARE(QDir(dir.filePath("real")).entryList(QDir::Files | QDir::Hidden), QStringList{"data.txt"});
     }
 
     void destroyedWriterLeavesNothing() {

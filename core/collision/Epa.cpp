@@ -304,12 +304,24 @@ EpaResult epaPenetration(const Shape& a, const Transform& xfA, const Shape& b, c
     result.status = status;
     if (bestFace < 0 || status == EpaStatus::Degenerate)
         return result;
+    if (!poly.faces[bestFace].alive) {
+        // The iteration bound struck after an expansion removed the face: take the closest face that is left.
+        bestFace = -1;
+        for (int i = 0; i < int(poly.faces.size()); ++i) {
+            if (poly.faces[i].alive && (bestFace < 0 || poly.faces[i].dist < poly.faces[bestFace].dist))
+                bestFace = i;
+        }
+        if (bestFace < 0) {
+            result.status = EpaStatus::Degenerate;
+            return result;
+        }
+    }
 
     // A face of the Minkowski difference that is a polygon is split into coplanar triangles of equal distance, and
     // the origin projects into only one of them: pick, among the faces as close as the best, the one that holds
     // the projection, or the witnesses would be extrapolated off the shapes.
     int chosen = bestFace;
-    Real lambda[3];
+    Real lambda[3] = {1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0};
     Real inside = -std::numeric_limits<Real>::infinity();
     for (int i = 0; i < int(poly.faces.size()); ++i) {
         const EpaFace& g = poly.faces[i];

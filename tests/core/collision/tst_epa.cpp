@@ -187,10 +187,12 @@ private slots:
         QCOMPARE(r.method, PenetrationMethod::Epa);
         QCOMPARE(r.epaStatus, EpaStatus::BudgetExceeded);
         const SatResult sat = satPolyhedra(big, xa, big, xb);
-        qInfo("EPA lower bound %.6f m, exact %.6f m", -r.separation, -sat.separation);
+        qInfo("EPA lower bound %.6f m, exact %.6f m, depth along EPA's normal %.6f m", -r.separation, -sat.separation,
+              -separationAlong(big, xa, big, xb, r.normal));
         QVERIFY(-r.separation <= -sat.separation + 1e-9);
         QVERIFY(-r.separation >= 0.99 * -sat.separation);
-        QVERIFY(std::abs(separationAlong(big, xa, big, xb, r.normal) - r.separation) < 0.01 * -sat.separation);
+        // Pushing along EPA's normal separates the pair with at most 1% more travel than the exact depth.
+        QVERIFY(std::abs(separationAlong(big, xa, big, xb, r.normal) - sat.separation) < 0.01 * -sat.separation);
     }
 
     // EPA with a face budget too small to converge: the result must come from the SAT and still be exact.

@@ -89,6 +89,15 @@ private slots:
                 for (int k = 0; k < m.pointCount; ++k) {
                     QVERIFY(std::isfinite(m.points[k].separation));
                     QVERIFY(finiteVec(m.points[k].localA) && finiteVec(m.points[k].localB));
+                    // The witnesses differ by the separation along the normal, at every scale.
+                    const Vec3 d = xb.apply(m.points[k].localB) - xa.apply(m.points[k].localA);
+                    if (glm::length(d - m.points[k].separation * m.normal) >
+                        1e-9 * std::max({1.0, scales[sa], scales[sb]}))
+                        qWarning("i %d kinds %d %d scales %g %g method %d points %d sep %.9g off %.3g", i, ka, kb,
+                                 scales[sa], scales[sb], int(method), m.pointCount, m.points[k].separation,
+                                 glm::length(d - m.points[k].separation * m.normal));
+                    QVERIFY(glm::length(d - m.points[k].separation * m.normal) <=
+                            1e-9 * std::max({1.0, scales[sa], scales[sb]}));
                 }
             }
             const PenetrationResult r = signedDistance(a, xa, b, xb);

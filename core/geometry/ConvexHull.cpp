@@ -105,8 +105,8 @@ class QuickHull {
 public:
     QuickHull(const std::vector<Vec3>& local, Real tolerance) : m_pts(local), m_eps(tolerance) {}
 
-    // Builds the triangle hull from a non-degenerate starting tetrahedron. Returns false only if the start is bad.
-    bool build(const std::array<uint32_t, 4>& simplex);
+    // Builds the triangle hull from a starting tetrahedron that is thicker than the tolerance.
+    void build(const std::array<uint32_t, 4>& simplex);
 
     // Groups coplanar triangles into polygons; returns loops of local point indices, counter-clockwise from outside.
     std::vector<std::vector<uint32_t>> mergedFaces() const;
@@ -228,7 +228,7 @@ void QuickHull::assign(const std::vector<uint32_t>& candidates, const std::vecto
     }
 }
 
-bool QuickHull::build(const std::array<uint32_t, 4>& s) {
+void QuickHull::build(const std::array<uint32_t, 4>& s) {
     uint32_t a = s[0], b = s[1], c = s[2];
     const uint32_t d = s[3];
     if (glm::dot(triangleNormal(m_pts[a], m_pts[b], m_pts[c]), m_pts[d] - m_pts[a]) > 0.0)
@@ -285,7 +285,6 @@ bool QuickHull::build(const std::array<uint32_t, 4>& s) {
             }
         }
     }
-    return true;
 }
 
 bool QuickHull::addPoint(int32_t seedFace, uint32_t p) {

@@ -405,6 +405,43 @@ private slots:
         }
     }
 
+    // Degenerate overlaps: two identical coincident boxes, and a box fully inside another. The deepest point
+    // matches the exact depth and the normal is the analytic one.
+    void containedAndCoincident_data() {
+        QTest::addColumn<Vec3>("outerHalf");
+        QTest::addColumn<Vec3>("innerHalf");
+        QTest::addColumn<Vec3>("innerCentre");
+        QTest::addColumn<Real>("depth");
+        QTest::addColumn<Vec3>("normal");
+        QTest::newRow("coincident") << Vec3(0.5, 0.3, 0.7) << Vec3(0.5, 0.3, 0.7) << Vec3(0.0) << 0.6 << Vec3(0, 1, 0);
+        QTest::newRow("contained") << Vec3(2.0) << Vec3(0.25) << Vec3(0.5, 0.0, 0.3) << 1.75 << Vec3(1, 0, 0);
+    }
+
+    void containedAndCoincident() {
+        QFETCH(Vec3, outerHalf);
+        QFETCH(Vec3, innerHalf);
+        QFETCH(Vec3, innerCentre);
+        QFETCH(Real, depth);
+        QFETCH(Vec3, normal);
+        const Shape outer = mustShape(makeBox(outerHalf));
+        const Shape inner = mustShape(makeBox(innerHalf));
+        const Transform xi = at(innerCentre);
+        for (PolyhedronMethod method : {PolyhedronMethod::Sat, PolyhedronMethod::GjkEpa}) {
+            CollideOptions options;
+            options.method = method;
+            Manifold m;
+            QVERIFY(collide(outer, Transform{}, inner, xi, 0.01, m, options));
+            QVERIFY(m.pointCount >= 1);
+            QVERIFY(manifoldIsConsistent(m, Transform{}, xi));
+            // Either sign is exact for the coincident pair; the axis is not negotiable.
+            QVERIFY(std::abs(glm::dot(m.normal, normal)) > std::cos(0.1 * kPi / 180.0));
+            Real deepest = 0.0;
+            for (int i = 0; i < m.pointCount; ++i)
+                deepest = std::min(deepest, m.points[i].separation);
+            QVERIFY(std::abs(deepest + depth) < 1e-9);
+        }
+    }
+
     void nonFiniteInputGivesNoContact() {
         const Shape cube = mustShape(makeBox(Vec3(0.5)));
         Manifold m;

@@ -209,7 +209,7 @@ void Renderer::setTransforms(std::span<const glm::mat4> models) {
     m_instancesDirty = true;
     for (size_t k = 0; k < m_selectedSlots.size(); ++k)
         m_selected[k].model = m_instances[m_selectedSlots[k]].model;
-    m_selectionDirty = !m_selectedSlots.empty();
+    m_selectionDirty = m_selectionDirty || !m_selectedSlots.empty();
 }
 
 void Renderer::uploadMeshes() {

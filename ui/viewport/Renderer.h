@@ -75,12 +75,12 @@ private:
         int indexCount = 0;
     };
 
-    void uploadMeshes();
     struct SelectionRange {
         int first = 0; // into m_selected
         int count = 0;
     };
 
+    void uploadMeshes();
     void uploadInstances(unsigned buffer, size_t& capacity, const std::vector<InstanceData>& data);
     void gatherSelection();
     void drawMeshes(QOpenGLShaderProgram& program, bool outlinePass);

@@ -6,6 +6,7 @@
 #include "collision/Gjk.h"
 #include "collision/Penetration.h"
 #include "collision/Sat.h"
+#include "geometry/ConvexHull.h"
 
 #include <QtTest>
 
@@ -439,6 +440,36 @@ private slots:
             for (int i = 0; i < m.pointCount; ++i)
                 deepest = std::min(deepest, m.points[i].separation);
             QVERIFY(std::abs(deepest + depth) < 1e-9);
+        }
+    }
+
+    // Hulls from computeConvexHull (coplanar faces merged into polygons) behave like the hand-built ones: a box
+    // from its eight corners plus interior points, and a Blender plane (four coplanar points) as a flat anchor.
+    void computedHulls() {
+        std::vector<Vec3> points;
+        std::mt19937_64 rng(8);
+        std::uniform_real_distribution<Real> u(-0.5, 0.5);
+        for (int i = 0; i < 8; ++i)
+            points.push_back({(i & 1) ? 0.5 : -0.5, (i & 2) ? 0.5 : -0.5, (i & 4) ? 0.5 : -0.5});
+        for (int i = 0; i < 40; ++i)
+            points.push_back({u(rng), u(rng), u(rng)});
+        const Result<Shape> cube = makeHull(computeConvexHull(points));
+        QVERIFY(cube.ok());
+        QCOMPARE(cube->polyhedron->faces.size(), size_t(6));
+        const Result<Shape> plane = makeHull(
+            computeConvexHull(std::vector<Vec3>{Vec3(-3, 0, -3), Vec3(3, 0, -3), Vec3(3, 0, 3), Vec3(-3, 0, 3)}));
+        QVERIFY(plane.ok());
+        QVERIFY(plane->isFlat());
+        const Shape base = mustShape(makeBox(Vec3(2.0, 0.5, 2.0)));
+        for (const Shape* floor : {&base, &plane.value()}) {
+            const Real top = floor->isFlat() ? 0.0 : 0.5;
+            const Transform xc = Transform::fromQuat(Vec3(0.2, top + 0.499, -0.1), axisAngle(Vec3(0, 1, 0), 0.7));
+            Manifold m;
+            QVERIFY(collide(*floor, Transform{}, *cube, xc, 0.01, m));
+            QCOMPARE(m.pointCount, 4);
+            QVERIFY(angleDegrees(m.normal, Vec3(0, 1, 0)) < 0.1);
+            for (int i = 0; i < 4; ++i)
+                QVERIFY(std::abs(m.points[i].separation + 0.001) < 1e-9);
         }
     }
 

@@ -194,6 +194,28 @@ private slots:
         QVERIFY(exact.distance > 0.0);
     }
 
+    // World bounds from the support function are the tight box of the rotated shape.
+    void worldBounds() {
+        const Shape box = mustShape(makeBox(Vec3(0.5, 0.2, 0.3)));
+        const Shape ball = mustShape(makeSphere(0.4));
+        std::mt19937_64 rng(2);
+        for (int i = 0; i < 100; ++i) {
+            const Transform xf = Transform::fromQuat(Vec3(1.0, -2.0, 3.0), randomRotation(rng));
+            Aabb expected{Vec3(1e9), Vec3(-1e9)};
+            for (const Vec3& v : box.polyhedron->vertices) {
+                expected.min = glm::min(expected.min, xf.apply(v));
+                expected.max = glm::max(expected.max, xf.apply(v));
+            }
+            const Aabb got = box.worldBounds(xf);
+            QVERIFY(glm::length(got.min - expected.min) < 1e-12 && glm::length(got.max - expected.max) < 1e-12);
+            const Aabb sphere = ball.worldBounds(xf);
+            QVERIFY(glm::length(sphere.min - (xf.position - Vec3(0.4))) < 1e-12);
+            QVERIFY(glm::length(sphere.max - (xf.position + Vec3(0.4))) < 1e-12);
+        }
+        QCOMPARE(box.minExtent(), 0.4);
+        QVERIFY(std::abs(box.boundingRadius() - std::sqrt(0.25 + 0.04 + 0.09)) < 1e-15);
+    }
+
     void badShapesAreErrors() {
         QVERIFY(!makeSphere(-1.0).ok());
         QVERIFY(!makeSphere(std::nan("")).ok());

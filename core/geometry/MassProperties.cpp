@@ -37,6 +37,16 @@ bool allFinite(const Mat3& m) {
     return true;
 }
 
+// Shapes beyond about 1e100 m overflow the integrals (volume ~ size^3, inertia ~ size^5). Such a result is not
+// representable; it is reported as empty at a finite point instead of letting infinities and NaN reach a body.
+MassProperties representable(const MassProperties& mp, const Vec3& fallbackCentroid) {
+    if (std::isfinite(mp.volume) && std::isfinite(mp.area) && finite(mp.centroid) && allFinite(mp.inertia))
+        return mp;
+    MassProperties empty;
+    empty.centroid = finite(fallbackCentroid) ? fallbackCentroid : Vec3(0.0);
+    return empty;
+}
+
 } // namespace
 
 MassProperties polyhedronMassProperties(std::span<const Vec3> vertices,
@@ -100,7 +110,7 @@ MassProperties polyhedronMassProperties(std::span<const Vec3> vertices,
     if (!(volume > 1e-12 * scale3) || !std::isfinite(volume)) {
         out.volume = 0.0;
         out.centroid = area > 0.0 ? ref + areaMoment / area : ref;
-        return out;
+        return representable(out, ref);
     }
     const Vec3 c = firstMoment / volume;
     // Parallel-axis step for the covariance: about the centroid it is the moment minus V c c^T.
@@ -108,9 +118,7 @@ MassProperties polyhedronMassProperties(std::span<const Vec3> vertices,
     out.volume = volume;
     out.centroid = ref + c;
     out.inertia = inertiaFromCovariance(centred);
-    if (!allFinite(out.inertia) || !std::isfinite(out.area))
-        return MassProperties{};
-    return out;
+    return representable(out, ref);
 }
 
 MassProperties hullMassProperties(const ConvexHull& hull) {
@@ -142,7 +150,7 @@ MassProperties hullMassProperties(const ConvexHull& hull) {
         }
         out.area = area;
         out.centroid = area > 0.0 ? ref + moment / area : ref;
-        return out;
+        return representable(out, ref);
     }
     // Points and segments: no area, no volume; the centroid is the mean of the vertices.
     Vec3 sum(0.0);

@@ -400,6 +400,15 @@ private slots:
         principalAxes(Mat3(std::nan("")), moments, axes);
         QCOMPARE(moments, Vec3(0.0));
         QCOMPARE(axes, Mat3(1.0));
+        // Beyond about 1e100 m the integrals overflow: reported as empty at a finite point, never as inf or NaN.
+        std::vector<Vec3> huge;
+        Triangles hugeTris;
+        boxMesh(Vec3(1e120), Vec3(3e120, 0.0, 0.0), huge, hugeTris);
+        for (const MassProperties& mp :
+             {polyhedronMassProperties(huge, hugeTris), hullMassProperties(computeConvexHull(huge))}) {
+            QCOMPARE(mp.volume, 0.0);
+            QVERIFY(std::isfinite(mp.area) && std::isfinite(glm::length(mp.centroid)) && maxAbs(mp.inertia) == 0.0);
+        }
         const MassProperties empty = hullMassProperties(ConvexHull{});
         QCOMPARE(empty.volume, 0.0);
         QCOMPARE(empty.area, 0.0);

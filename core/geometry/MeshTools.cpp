@@ -11,8 +11,9 @@ namespace rl {
 
 namespace {
 
-// Upper bound on generated resolution: 4096 x 4096 is already 33 million triangles.
-constexpr int kMaxSegments = 4096;
+// Upper bound on generated resolution, so that a typo in a scene file cannot ask for gigabytes: a 1024 x 1024
+// UV sphere is already two million triangles.
+constexpr int kMaxSegments = 1024;
 
 bool finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

@@ -17,7 +17,7 @@ namespace rl {
 inline constexpr Real kConcavityRelativeTolerance = 1e-3;
 
 // Primitives, centred on the origin, Y-up, counter-clockwise from outside, vertices shared between triangles.
-// Non-finite or non-positive sizes give an empty mesh; segment and ring counts are clamped to [3, 4096] / [2, 4096].
+// Non-finite or non-positive sizes give an empty mesh; segment and ring counts are clamped to [3, 1024] / [2, 1024].
 TriangleMesh makeBoxMesh(Vec3 halfExtents);
 TriangleMesh makeUvSphereMesh(Real radius, int segments, int rings);
 // Axis along Y, caps at y = -halfHeight and y = +halfHeight.

@@ -207,6 +207,13 @@ private slots:
         QVERIFY(mesh.triangles.empty());
     }
 
+    void resolutionClamped() {
+        // A typo like 100000 segments is clamped to 1024 (MeshTools.h), not allocated.
+        QCOMPARE(makeCylinderMesh(1.0, 1.0, 100000).vertices.size(), size_t(2 * 1024));
+        QCOMPARE(makeUvSphereMesh(1.0, 1 << 30, 1 << 30).vertices.size(), size_t(1024 * 1023 + 2));
+        QCOMPARE(makeUvSphereMesh(1.0, -5, 0).vertices.size(), size_t(3 * 1 + 2));
+    }
+
     void concavity_data() {
         QTest::addColumn<TriangleMesh>("mesh");
         QTest::addColumn<bool>("concave");

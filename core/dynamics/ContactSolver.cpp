@@ -129,6 +129,10 @@ void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
             const Real newImpulse = std::max(p.normalImpulse + impulse, 0.0);
             impulse = newImpulse - p.normalImpulse;
             p.normalImpulse = newImpulse;
+            // Restitution bounces off the speed at the moment of impact, which for a speculative contact comes
+            // substeps after prepare() looked: gravity has added to it since.
+            if (impulse > 0.0 && p.maxNormalImpulse == 0.0)
+                p.relativeVelocity = std::min(p.relativeVelocity, vn);
             p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
             applyImpulse(a, b, p.rA, p.rB, impulse * c.normal);
         }

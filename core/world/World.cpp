@@ -228,9 +228,15 @@ void World::updateBroadphase() {
     for (uint32_t i = 0; i < m_state.size(); ++i) {
         if (!m_state.isMoving(i))
             continue;
-        const Aabb box = m_shapes[i].worldBounds(transform(i));
+        // The proxy must cover everything this step's speculative contacts may need: the box swept by this
+        // step's motion, grown by the speculative distance. The tree only reinserts when that leaves the fat box,
+        // so a body that turns around (a ball at the top of its bounce) still finds the floor in time.
+        const Aabb tight = m_shapes[i].worldBounds(transform(i));
+        const Vec3 motion = m_state.linearVelocity[i] * dt;
+        const Vec3 grow(m_tuning.speculativeDistance + glm::length(m_state.angularVelocity[i]) * m_radius[i] * dt);
+        Aabb swept{glm::min(tight.min, tight.min + motion) - grow, glm::max(tight.max, tight.max + motion) + grow};
         // A body that became non-finite is left where its proxy was; the world reports it through diagnostics.
-        (void)m_broadPhase.moveProxy(m_proxies[i], box, m_state.linearVelocity[i] * dt);
+        (void)m_broadPhase.moveProxy(m_proxies[i], swept, motion);
     }
 }
 
@@ -407,15 +413,17 @@ void World::solve() {
         friction.push_back(c.friction);
         restitution.push_back(c.restitution);
     }
-    m_solver.resetCounters();
-    m_solver.prepare(manifolds, indexA, indexB, friction, restitution, bodies, centers, h, m_solverSettings);
-
     auto toSolver = [&] {
         for (size_t k = 0; k < moving.size(); ++k) {
             bodies[k + 1].v = m_state.linearVelocity[moving[k]];
             bodies[k + 1].w = rotation ? m_state.angularVelocity[moving[k]] : Vec3(0.0);
         }
     };
+    // prepare() records each point's approach speed for restitution, so it must see the current velocities.
+    toSolver();
+    m_solver.resetCounters();
+    m_solver.prepare(manifolds, indexA, indexB, friction, restitution, bodies, centers, h, m_solverSettings);
+
     auto fromSolver = [&] {
         for (size_t k = 0; k < moving.size(); ++k) {
             m_state.linearVelocity[moving[k]] = bodies[k + 1].v;

@@ -49,7 +49,7 @@ ToiResult timeOfImpact(const Shape& a, const Motion& motionA, const Shape& b, co
 // extent: then a contact can be missed entirely (tunnelling) rather than found late. The bound on a point's
 // travel is (|v| + |omega| * boundingRadius) * dt. A quarter of the extent keeps at least four steps inside any
 // wall as thick as the body, which the speculative margin then covers; it keeps CCD off for resting and slow
-// bodies, which are the vast majority.
+// bodies.
 inline constexpr Real kCcdExtentFraction = 0.25;
 bool needsCcd(const Shape& shape, const Vec3& linearVelocity, const Vec3& angularVelocity, Real dt,
               Real extentFraction = kCcdExtentFraction);

@@ -2,6 +2,8 @@
 
 #include "document/SceneDocument.h"
 #include "outliner/OutlinerModel.h"
+#include "viewport/ScenePresenter.h"
+#include "viewport/Viewport.h"
 
 #include <QAction>
 #include <QApplication>
@@ -10,6 +12,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
+#include <QItemSelectionModel>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
@@ -22,19 +25,49 @@
 
 namespace rl {
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new SceneDocument(this)) {
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), m_document(new SceneDocument(this)), m_presenter(std::make_unique<ScenePresenter>()) {
     setObjectName("MainWindow");
-    auto* central = new QWidget(this);
-    central->setObjectName("ViewportArea");
-    central->setMinimumSize(640, 480);
-    setCentralWidget(central);
+    m_viewport = new Viewport(this);
+    m_viewport->setObjectName("Viewport");
+    m_viewport->setMinimumSize(480, 360);
+    m_viewport->setPickFunction([this](const ViewRay& ray) { return m_presenter->pick(ray); });
+    setCentralWidget(m_viewport);
 
     createDocks();
     createActions();
 
+    m_selectionLabel = new QLabel(this);
     m_bodyCountLabel = new QLabel(this);
+    m_frameTimeLabel = new QLabel(this);
+    statusBar()->addPermanentWidget(m_selectionLabel);
     statusBar()->addPermanentWidget(m_bodyCountLabel);
+    statusBar()->addPermanentWidget(m_frameTimeLabel);
+    connect(m_viewport, &Viewport::frameRendered, this,
+            [this](double ms) { m_frameTimeLabel->setText(tr("frame %1 ms").arg(ms, 0, 'f', 1)); });
+    connect(m_viewport, &Viewport::selectionChanged, this, [this](const QList<int>& picked, bool extend) {
+        QList<int> next = extend ? m_selection : QList<int>{};
+        for (int body : picked) {
+            if (extend && next.contains(body))
+                next.removeAll(body); // Ctrl/Shift-click toggles, as in Blender
+            else if (!next.contains(body))
+                next.append(body);
+        }
+        setSelectedBodies(next);
+    });
+    connect(m_outlinerView->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
+        if (m_syncingSelection)
+            return;
+        QList<int> bodies;
+        for (const QModelIndex& index : m_outlinerView->selectionModel()->selectedRows())
+            bodies.append(index.data(OutlinerModel::BodyIndexRole).toInt());
+        setSelectedBodies(bodies);
+    });
 
+    connect(m_document, &SceneDocument::sceneReset, this, &MainWindow::rebuildViewport);
+    connect(m_document, &SceneDocument::bodyChanged, this, &MainWindow::rebuildViewport);
+    connect(m_document, &SceneDocument::bodyInserted, this, &MainWindow::rebuildViewport);
+    connect(m_document, &SceneDocument::bodyRemoved, this, &MainWindow::rebuildViewport);
     connect(m_document, &SceneDocument::sceneReset, this, &MainWindow::updateStatus);
     connect(m_document, &SceneDocument::bodyInserted, this, &MainWindow::updateStatus);
     connect(m_document, &SceneDocument::bodyRemoved, this, &MainWindow::updateStatus);
@@ -106,6 +139,54 @@ void MainWindow::createActions() {
     });
 }
 
+void MainWindow::rebuildViewport() {
+    m_presenter->rebuild(m_document->scene());
+    m_viewport->setScene(m_presenter->viewportScene());
+    // Keep only selected bodies that still exist.
+    QList<int> kept;
+    for (int body : m_selection)
+        if (body < m_document->bodyCount())
+            kept.append(body);
+    m_selection.clear();
+    setSelectedBodies(kept);
+}
+
+void MainWindow::setSelectedBodies(const QList<int>& bodies) {
+    QList<int> sorted = bodies;
+    std::sort(sorted.begin(), sorted.end());
+    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+    if (sorted != m_selection || m_viewport->selection() != sorted) {
+        m_selection = sorted;
+        m_viewport->setSelection(m_selection);
+        syncOutlinerSelection();
+    }
+    if (m_selection.isEmpty())
+        m_selectionLabel->setText(tr("nothing selected"));
+    else if (m_selection.size() == 1)
+        m_selectionLabel->setText(
+            tr("selected: %1").arg(QString::fromStdString(m_document->body(m_selection.first()).name)));
+    else
+        m_selectionLabel->setText(tr("%n selected", "", m_selection.size()));
+}
+
+void MainWindow::syncOutlinerSelection() {
+    m_syncingSelection = true;
+    QItemSelection selection;
+    for (int body : m_selection) {
+        const QModelIndex source = m_outlinerModel->index(body, 0);
+        const QModelIndex index = m_outlinerProxy->mapFromSource(source);
+        if (index.isValid())
+            selection.select(index, index.siblingAtColumn(OutlinerModel::ColumnCount - 1));
+    }
+    m_outlinerView->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect);
+    if (!m_selection.isEmpty()) {
+        const QModelIndex current = m_outlinerProxy->mapFromSource(m_outlinerModel->index(m_selection.last(), 0));
+        if (current.isValid())
+            m_outlinerView->scrollTo(current);
+    }
+    m_syncingSelection = false;
+}
+
 bool MainWindow::openFile(const QString& path) {
     QString error;
     if (!m_document->load(path, &error)) {
@@ -113,6 +194,7 @@ bool MainWindow::openFile(const QString& path) {
         return false;
     }
     statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), 5000);
+    m_viewport->frameAll();
     return true;
 }
 

@@ -4,6 +4,8 @@
 
 #include <QMainWindow>
 
+#include <memory>
+
 class QLabel;
 class QTreeView;
 class QSortFilterProxyModel;
@@ -12,6 +14,8 @@ namespace rl {
 
 class SceneDocument;
 class OutlinerModel;
+class ScenePresenter;
+class Viewport;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -21,6 +25,10 @@ public:
 
     SceneDocument* document() const { return m_document; }
     QTreeView* outlinerView() const { return m_outlinerView; }
+    Viewport* viewport() const { return m_viewport; }
+    // Selected body indices, in ascending order. The viewport and the outliner always show the same selection.
+    QList<int> selectedBodies() const { return m_selection; }
+    void setSelectedBodies(const QList<int>& bodies);
 
     // Opens a scene file; shows the core's error (file, object, problem) in a message box when it fails.
     bool openFile(const QString& path);
@@ -33,12 +41,20 @@ private:
     void createDocks();
     void updateTitle();
     void updateStatus();
+    void rebuildViewport();
+    void syncOutlinerSelection();
 
     SceneDocument* m_document = nullptr;
     OutlinerModel* m_outlinerModel = nullptr;
     QSortFilterProxyModel* m_outlinerProxy = nullptr;
     QTreeView* m_outlinerView = nullptr;
     QLabel* m_bodyCountLabel = nullptr;
+    QLabel* m_selectionLabel = nullptr;
+    QLabel* m_frameTimeLabel = nullptr;
+    Viewport* m_viewport = nullptr;
+    std::unique_ptr<ScenePresenter> m_presenter;
+    QList<int> m_selection;
+    bool m_syncingSelection = false;
 };
 
 } // namespace rl

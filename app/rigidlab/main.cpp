@@ -16,7 +16,8 @@ int main(int argc, char* argv[]) {
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
     format.setStencilBufferSize(8);
-    format.setSamples(4);
+    // No multisampling: under Mesa llvmpipe 4x MSAA on the window surface costs 77 -> 129 ms CPU per 5,000-body
+    // frame (measured); the viewport's outline keeps edges readable without it.
     QSurfaceFormat::setDefaultFormat(format);
 
     QApplication app(argc, argv);

@@ -2,6 +2,7 @@
 #include "MainWindow.h"
 #include "document/SceneDocument.h"
 #include "outliner/OutlinerModel.h"
+#include "viewport/Viewport.h"
 
 #include <QAbstractItemModel>
 #include <QApplication>
@@ -65,6 +66,61 @@ private slots:
         QCOMPARE(window.outlinerView()->model()->rowCount(), 1);
         filter->clear();
         QCOMPARE(window.outlinerView()->model()->rowCount(), 11);
+    }
+
+    // Clicking a body in the viewport selects it there and in the outliner; Ctrl-click extends; selecting in the
+    // outliner selects in the viewport.
+    void selectionStaysInSync() {
+        rl::MainWindow window;
+        window.resize(1200, 800);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/stack.obj")));
+        rl::Viewport* viewport = window.viewport();
+        QTRY_VERIFY(viewport->isRendererReady());
+        auto pixelOf = [&](int body) {
+            const rl::BodyDef& b = window.document()->body(body);
+            glm::dvec3 mean(0.0);
+            for (const rl::Vec3& p : b.shape.points)
+                mean += p;
+            mean /= double(b.shape.points.size());
+            const glm::vec3 p = viewport->camera().project(glm::vec3(mean));
+            return QPoint(int(p.x), int(p.y));
+        };
+        QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, pixelOf(10));
+        QCOMPARE(window.selectedBodies(), QList<int>{10});
+        QCOMPARE(viewport->selection(), QList<int>{10});
+        QModelIndexList rows = window.outlinerView()->selectionModel()->selectedRows();
+        QCOMPARE(rows.size(), 1);
+        QCOMPARE(rows.first().data(rl::OutlinerModel::BodyIndexRole).toInt(), 10);
+
+        QTest::mouseClick(viewport, Qt::LeftButton, Qt::ControlModifier, pixelOf(5));
+        QCOMPARE(window.selectedBodies(), (QList<int>{5, 10}));
+        QCOMPARE(window.outlinerView()->selectionModel()->selectedRows().size(), 2);
+
+        window.outlinerView()->selectionModel()->select(window.outlinerView()->model()->index(3, 0),
+                                                        QItemSelectionModel::ClearAndSelect |
+                                                            QItemSelectionModel::Rows);
+        QCOMPARE(window.selectedBodies(), QList<int>{3});
+        QCOMPARE(viewport->selection(), QList<int>{3});
+    }
+
+    // The sample scene renders: the viewport's pixels are not blank and the outliner shows every body.
+    void screenshotIsNotBlank() {
+        rl::MainWindow window;
+        window.resize(1200, 800);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/mixed.obj")));
+        QTRY_VERIFY(window.viewport()->isRendererReady());
+        const QImage image = window.viewport()->grabFramebuffer();
+        QVERIFY(!image.isNull());
+        QSet<QRgb> colours;
+        for (int y = 0; y < image.height(); y += 7)
+            for (int x = 0; x < image.width(); x += 7)
+                colours.insert(image.pixel(x, y));
+        QVERIFY2(colours.size() > 50, qPrintable(QString("only %1 distinct colours").arg(colours.size())));
+        image.save(QDir::tempPath() + "/rigidlab_mainwindow.png");
     }
 
     void badFileShowsErrorAndKeepsScene() {

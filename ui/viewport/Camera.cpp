@@ -100,7 +100,7 @@ void Camera::frame(const Bounds& box) {
     setDistance(1.05f * radius / std::sin(halfFov));
 }
 
-Ray Camera::unproject(float x, float y) const {
+ViewRay Camera::unproject(float x, float y) const {
     const float ndcX = 2.0f * x / static_cast<float>(m_width) - 1.0f;
     const float ndcY = 1.0f - 2.0f * y / static_cast<float>(m_height);
     const glm::mat4 inverse = glm::inverse(viewProjection());
@@ -108,7 +108,7 @@ Ray Camera::unproject(float x, float y) const {
     glm::vec4 farPoint = inverse * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
     nearPoint /= nearPoint.w;
     farPoint /= farPoint.w;
-    Ray ray;
+    ViewRay ray;
     ray.origin = eye();
     ray.direction = glm::normalize(glm::vec3(farPoint) - glm::vec3(nearPoint));
     return ray;

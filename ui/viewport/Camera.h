@@ -49,7 +49,7 @@ public:
     void frame(const Bounds& box);
 
     // World ray through a pixel (logical pixel coordinates, fractional allowed), starting at the eye.
-    Ray unproject(float x, float y) const;
+    ViewRay unproject(float x, float y) const;
     // World point -> logical pixel (x, y) and NDC depth (z). z outside [-1, 1] means outside the clip range.
     glm::vec3 project(const glm::vec3& world) const;
 

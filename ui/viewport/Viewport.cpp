@@ -332,7 +332,7 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
 }
 
 void Viewport::clickSelect(const QPoint& position, bool extend) {
-    const Ray ray = m_camera.unproject(static_cast<float>(position.x()), static_cast<float>(position.y()));
+    const ViewRay ray = m_camera.unproject(static_cast<float>(position.x()), static_cast<float>(position.y()));
     const int hit = m_pick ? m_pick(ray) : m_scene.pickBounds(ray);
     if (hit >= 0)
         emit selectionChanged({hit}, extend);

@@ -23,7 +23,7 @@ class Viewport : public QOpenGLWidget {
     Q_OBJECT
 public:
     // Maps a world ray to the instance it hits first, or -1. The owner wires it to the core's ray cast.
-    using PickFunction = std::function<int(const Ray&)>;
+    using PickFunction = std::function<int(const ViewRay&)>;
 
     explicit Viewport(QWidget* parent = nullptr);
     ~Viewport() override;

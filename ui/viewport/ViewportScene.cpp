@@ -56,7 +56,7 @@ Bounds ViewportScene::bounds(bool selectedOnly) const {
     return all;
 }
 
-int ViewportScene::pickBounds(const Ray& ray) const {
+int ViewportScene::pickBounds(const ViewRay& ray) const {
     int best = -1;
     float bestT = std::numeric_limits<float>::max();
     for (int i = 0; i < static_cast<int>(instances.size()); ++i) {
@@ -77,7 +77,7 @@ glm::mat4 instanceTransform(const glm::dvec3& position, const glm::dquat& orient
     return m * shapeFrame;
 }
 
-ViewportMesh makeBoxMesh(const glm::vec3& h) {
+ViewportMesh makeViewportBoxMesh(const glm::vec3& h) {
     ViewportMesh mesh;
     for (int corner = 0; corner < 8; ++corner)
         mesh.vertices.emplace_back((corner & 1) ? h.x : -h.x, (corner & 2) ? h.y : -h.y, (corner & 4) ? h.z : -h.z);
@@ -91,7 +91,7 @@ ViewportMesh makeBoxMesh(const glm::vec3& h) {
     return mesh;
 }
 
-ViewportMesh makeSphereMesh(float radius, int segments, int rings) {
+ViewportMesh makeViewportSphereMesh(float radius, int segments, int rings) {
     segments = std::max(segments, 3);
     rings = std::max(rings, 2);
     ViewportMesh mesh;

@@ -43,7 +43,7 @@ struct ViewportScene {
     // Union over the visible instances; with selectedOnly, over the selected ones.
     Bounds bounds(bool selectedOnly = false) const;
     // Nearest instance whose world box the ray enters, or -1. A stand-in until the owner sets a real pick function.
-    int pickBounds(const Ray& ray) const;
+    int pickBounds(const ViewRay& ray) const;
 };
 
 // Model matrix of a body: translate(position) * rotate(orientation) * shapeFrame. The shape frame places the mesh's
@@ -52,7 +52,7 @@ glm::mat4 instanceTransform(const glm::dvec3& position, const glm::dquat& orient
                             const glm::mat4& shapeFrame = glm::mat4(1.0f));
 
 // Handy meshes for the owner and the tests: a box of given half extents, and a faceted UV sphere.
-ViewportMesh makeBoxMesh(const glm::vec3& halfExtents);
-ViewportMesh makeSphereMesh(float radius, int segments = 16, int rings = 8);
+ViewportMesh makeViewportBoxMesh(const glm::vec3& halfExtents);
+ViewportMesh makeViewportSphereMesh(float radius, int segments = 16, int rings = 8);
 
 } // namespace rl

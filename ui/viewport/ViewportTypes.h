@@ -8,7 +8,7 @@
 
 namespace rl {
 
-struct Ray {
+struct ViewRay {
     glm::vec3 origin{0.0f};
     glm::vec3 direction{0.0f, 0.0f, -1.0f}; // unit length
 };
@@ -34,7 +34,7 @@ struct Bounds {
 };
 
 // Slab test. Returns the entry distance along the ray, or a negative number when the ray misses the box.
-inline float intersectRayBounds(const Ray& ray, const Bounds& box) {
+inline float intersectRayBounds(const ViewRay& ray, const Bounds& box) {
     float tNear = 0.0f;
     float tFar = std::numeric_limits<float>::max();
     for (int axis = 0; axis < 3; ++axis) {

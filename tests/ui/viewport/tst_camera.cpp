@@ -113,7 +113,7 @@ void TestCamera::unprojectCentreGivesViewDirection() {
     camera.setDistance(7.5f);
     camera.setYaw(glm::radians(yawDegrees));
     camera.setPitch(glm::radians(pitchDegrees));
-    const rl::Ray ray = camera.unproject(0.5f * width, 0.5f * height);
+    const rl::ViewRay ray = camera.unproject(0.5f * width, 0.5f * height);
     QVERIFY(glm::length(ray.origin - camera.eye()) < 1e-4f);
     QVERIFY(std::abs(glm::length(ray.direction) - 1.0f) < 1e-5f);
     QVERIFY2(angleBetween(ray.direction, camera.forward()) < 1e-3f, "centre ray is not the view direction");
@@ -126,7 +126,7 @@ void TestCamera::unprojectAndProjectAgree() {
     camera.setTarget(glm::vec3(0.0f, 0.5f, 0.0f));
     const float pixels[][2] = {{0.0f, 0.0f}, {1279.0f, 799.0f}, {100.0f, 700.0f}, {640.0f, 10.0f}};
     for (const auto& px : pixels) {
-        const rl::Ray ray = camera.unproject(px[0], px[1]);
+        const rl::ViewRay ray = camera.unproject(px[0], px[1]);
         const glm::vec3 point = ray.origin + 5.0f * ray.direction;
         const glm::vec3 back = camera.project(point);
         QVERIFY2(
@@ -135,9 +135,9 @@ void TestCamera::unprojectAndProjectAgree() {
         QVERIFY(back.z > -1.0f && back.z < 1.0f);
     }
     // A pixel right of centre gives a ray leaning to the camera's right.
-    const rl::Ray right = camera.unproject(1000.0f, 400.0f);
+    const rl::ViewRay right = camera.unproject(1000.0f, 400.0f);
     QVERIFY(glm::dot(right.direction, camera.right()) > 0.1f);
-    const rl::Ray high = camera.unproject(640.0f, 50.0f);
+    const rl::ViewRay high = camera.unproject(640.0f, 50.0f);
     QVERIFY(glm::dot(high.direction, camera.up()) > 0.1f);
 }
 

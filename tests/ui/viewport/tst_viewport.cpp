@@ -25,8 +25,8 @@ namespace {
 // Test scene: a grey floor anchor with its top at y = 0 and three boxes standing on it, red, green and blue.
 rl::ViewportScene makeBoxesScene() {
     rl::ViewportScene scene;
-    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(5.0f, 0.25f, 5.0f)));
-    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(0.5f)));
+    scene.meshes.push_back(rl::makeViewportBoxMesh(glm::vec3(5.0f, 0.25f, 5.0f)));
+    scene.meshes.push_back(rl::makeViewportBoxMesh(glm::vec3(0.5f)));
     rl::ViewportInstance floor;
     floor.meshIndex = 0;
     // Off-centre so that its centre does not project onto the middle box (the box-select test relies on that).
@@ -47,7 +47,7 @@ rl::ViewportScene makeBoxesScene() {
 }
 
 // The pick function an owner would provide, here a plain ray-vs-world-box test over the scene's instances.
-int pickByBoxes(const rl::ViewportScene& scene, const rl::Ray& ray) {
+int pickByBoxes(const rl::ViewportScene& scene, const rl::ViewRay& ray) {
     int best = -1;
     float bestT = 1e30f;
     for (int i = 0; i < static_cast<int>(scene.instances.size()); ++i) {
@@ -226,7 +226,7 @@ void TestViewport::selectionShowsOrangeOutline() {
 
 void TestViewport::clickSelectsTheBoxUnderTheCursor() {
     m_viewport->setScene(makeBoxesScene());
-    m_viewport->setPickFunction([this](const rl::Ray& ray) { return pickByBoxes(m_viewport->scene(), ray); });
+    m_viewport->setPickFunction([this](const rl::ViewRay& ray) { return pickByBoxes(m_viewport->scene(), ray); });
     showViewport(640, 480);
     m_viewport->frameAll();
     QSignalSpy spy(m_viewport.get(), &rl::Viewport::selectionChanged);
@@ -370,10 +370,10 @@ void TestViewport::setTransformsMovesBodies() {
 void TestViewport::fiveThousandInstances() {
     // 5,000 boxes of three sizes on a floor: four meshes, so the bodies take four instanced draw calls.
     rl::ViewportScene scene;
-    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(40.0f, 0.5f, 40.0f)));
-    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(0.3f)));
-    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(0.4f, 0.2f, 0.25f)));
-    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(0.15f, 0.5f, 0.15f)));
+    scene.meshes.push_back(rl::makeViewportBoxMesh(glm::vec3(40.0f, 0.5f, 40.0f)));
+    scene.meshes.push_back(rl::makeViewportBoxMesh(glm::vec3(0.3f)));
+    scene.meshes.push_back(rl::makeViewportBoxMesh(glm::vec3(0.4f, 0.2f, 0.25f)));
+    scene.meshes.push_back(rl::makeViewportBoxMesh(glm::vec3(0.15f, 0.5f, 0.15f)));
     rl::ViewportInstance floor;
     floor.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -0.5f, 0.0f));
     floor.flags = rl::kInstanceAnchor;

@@ -40,7 +40,7 @@ private slots:
 };
 
 void TestViewportScene::boxMeshIsClosedAndOutward() {
-    const rl::ViewportMesh box = rl::makeBoxMesh(glm::vec3(0.5f, 1.0f, 2.0f));
+    const rl::ViewportMesh box = rl::makeViewportBoxMesh(glm::vec3(0.5f, 1.0f, 2.0f));
     QCOMPARE(box.vertices.size(), size_t(8));
     QCOMPARE(box.triangles.size(), size_t(12));
     verifyClosedAndOutward(box, 1.0f * 2.0f * 4.0f, 1e-4f);
@@ -50,7 +50,7 @@ void TestViewportScene::boxMeshIsClosedAndOutward() {
 }
 
 void TestViewportScene::sphereMeshIsClosedAndOutward() {
-    const rl::ViewportMesh sphere = rl::makeSphereMesh(1.0f, 32, 16);
+    const rl::ViewportMesh sphere = rl::makeViewportSphereMesh(1.0f, 32, 16);
     // A faceted sphere is a little smaller than the round one (4.18879): within 5% at this resolution.
     verifyClosedAndOutward(sphere, 4.18879f, 0.05f * 4.18879f);
     for (const glm::vec3& v : sphere.vertices)
@@ -68,7 +68,7 @@ void TestViewportScene::instanceTransformAppliesShapeFrameThenRotationThenPositi
 
 void TestViewportScene::instanceBoundsFollowTheModel() {
     rl::ViewportScene scene;
-    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(1.0f, 0.5f, 0.25f)));
+    scene.meshes.push_back(rl::makeViewportBoxMesh(glm::vec3(1.0f, 0.5f, 0.25f)));
     rl::ViewportInstance inst;
     inst.model =
         rl::instanceTransform(glm::dvec3(5.0, 0.0, 0.0), glm::angleAxis(glm::radians(90.0), glm::dvec3(0.0, 0.0, 1.0)));
@@ -84,7 +84,7 @@ void TestViewportScene::instanceBoundsFollowTheModel() {
 
 void TestViewportScene::sceneBoundsSkipHiddenAndCanTakeTheSelection() {
     rl::ViewportScene scene;
-    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(0.5f)));
+    scene.meshes.push_back(rl::makeViewportBoxMesh(glm::vec3(0.5f)));
     for (int i = 0; i < 3; ++i) {
         rl::ViewportInstance inst;
         inst.model = glm::translate(glm::mat4(1.0f), glm::vec3(10.0f * i, 0.0f, 0.0f));
@@ -101,13 +101,13 @@ void TestViewportScene::sceneBoundsSkipHiddenAndCanTakeTheSelection() {
 
 void TestViewportScene::pickBoundsReturnsTheNearestHit() {
     rl::ViewportScene scene;
-    scene.meshes.push_back(rl::makeBoxMesh(glm::vec3(0.5f)));
+    scene.meshes.push_back(rl::makeViewportBoxMesh(glm::vec3(0.5f)));
     for (float z : {-5.0f, -2.0f, -8.0f}) {
         rl::ViewportInstance inst;
         inst.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, z));
         scene.instances.push_back(inst);
     }
-    rl::Ray ray;
+    rl::ViewRay ray;
     ray.origin = glm::vec3(0.0f, 0.2f, 0.0f);
     ray.direction = glm::vec3(0.0f, 0.0f, -1.0f);
     QCOMPARE(scene.pickBounds(ray), 1);
@@ -121,7 +121,7 @@ void TestViewportScene::rayBoundsSlabTest() {
     rl::Bounds box;
     box.extend(glm::vec3(-1.0f));
     box.extend(glm::vec3(1.0f));
-    rl::Ray ray;
+    rl::ViewRay ray;
     ray.origin = glm::vec3(-5.0f, 0.0f, 0.0f);
     ray.direction = glm::vec3(1.0f, 0.0f, 0.0f);
     QCOMPARE(rl::intersectRayBounds(ray, box), 4.0f);

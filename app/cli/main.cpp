@@ -36,6 +36,8 @@ const Entry kCommands[] = {
     {"info", rl::cli::runInfo, "bodies, anchors, materials, volume, mass, centre of mass, inertia, warnings"},
     {"bake", rl::cli::runBake, "simulate a scene and write .bake and/or CSV"},
     {"export", rl::cli::runExport, "convert a .bake to CSV or to a .bake in the current format"},
+    {"accuracy", rl::cli::runAccuracy, "error against exact solutions versus CPU time, per integrator"},
+    {"bench", rl::cli::runBench, "step scenes and print the wall-clock cost per step (median, p95)"},
 };
 
 void printUsage(FILE* out) {

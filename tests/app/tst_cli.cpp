@@ -228,6 +228,27 @@ private slots:
         QVERIFY(!r.err.isEmpty());
     }
 
+    void accuracyPrintsTableAndWritesFiles() {
+        QTemporaryDir dir;
+        const QString csv = dir.filePath("acc.csv"), svg = dir.filePath("acc.svg");
+        const Run r = runCli({"accuracy", "--csv", csv, "--plot", svg});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY(r.out.contains("fitted order"));
+        // The original project's experiment: sin(t) over [0, 2 pi] with 10, 20 and 40 steps for every integrator.
+        for (const char* integrator : {"explicit-euler", "symplectic-euler", "verlet", "rk4"})
+            for (const char* steps : {" 10 ", " 20 ", " 40 "}) {
+                bool found = false;
+                for (const QByteArray& line : r.out.split('\n'))
+                    found =
+                        found || (line.startsWith("oscillator") && line.contains(integrator) && line.contains(steps));
+                QVERIFY2(found, integrator);
+            }
+        QFile c(csv), p(svg);
+        QVERIFY(c.open(QIODevice::ReadOnly) && p.open(QIODevice::ReadOnly));
+        QVERIFY(c.readAll().count('\n') > 100);
+        QVERIFY(p.readAll().contains("<svg"));
+    }
+
     void infoTextMentionsWarnings() {
         const Run r = runCli({"info", scenePath("mixed.obj")});
         QCOMPARE(r.exitCode, 0);

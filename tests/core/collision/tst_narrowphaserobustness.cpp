@@ -45,7 +45,7 @@ Shape scaledShape(int kind, Real s, std::mt19937_64& rng) {
 
 } // namespace
 
-class TestRobustness : public QObject {
+class TestNarrowphaseRobustness : public QObject {
     Q_OBJECT
 private slots:
     void randomPairsStayFinite() {
@@ -138,5 +138,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestRobustness)
-#include "tst_robustness.moc"
+QTEST_APPLESS_MAIN(TestNarrowphaseRobustness)
+#include "tst_narrowphaserobustness.moc"

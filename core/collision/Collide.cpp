@@ -345,6 +345,35 @@ int reduceContactPoints(const Vec3* p, const Real* sep, int count, const Vec3& n
     if (i3 < 0)
         return 3;
     chosen[3] = i3;
+    // The greedy picks can miss the best quadrilateral; a few rounds of single swaps (the deepest point stays)
+    // close most of the gap. Each accepted swap strictly grows the area, and the rounds are bounded.
+    auto quadArea = [&](const int q[4]) {
+        const int pairings[3][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 1, 3, 2}};
+        Real a = 0.0;
+        for (const auto& o : pairings)
+            a = std::max(a, std::abs(glm::dot(glm::cross(p[q[o[2]]] - p[q[o[0]]], p[q[o[3]]] - p[q[o[1]]]), normal)));
+        return a;
+    };
+    Real current = quadArea(chosen);
+    for (int round = 0; round < 3; ++round) {
+        bool improved = false;
+        for (int slot = 1; slot < 4; ++slot) {
+            for (int i = 0; i < count; ++i) {
+                if (i == chosen[0] || i == chosen[1] || i == chosen[2] || i == chosen[3])
+                    continue;
+                int trial[4] = {chosen[0], chosen[1], chosen[2], chosen[3]};
+                trial[slot] = i;
+                const Real a = quadArea(trial);
+                if (a > current * (1.0 + 1e-12)) {
+                    current = a;
+                    chosen[slot] = i;
+                    improved = true;
+                }
+            }
+        }
+        if (!improved)
+            break;
+    }
     return 4;
 }
 

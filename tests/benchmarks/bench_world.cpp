@@ -56,6 +56,7 @@ std::vector<Sample> timeSteps(int frames, StepFn&& step) {
 struct Summary {
     double wallMedian = 0.0, wallP95 = 0.0, cpuMedian = 0.0, cpuMean = 0.0;
     int awake = 0, contacts = 0;
+    double topY = 0.0; // highest centre of mass of a dynamic body at the end: shows whether a tower still stands
 };
 
 double medianOf(std::vector<double> v) {
@@ -98,8 +99,11 @@ std::string loadAverage() {
     return a + " " + b + " " + c;
 }
 
-std::optional<Summary> runRigidLab(const Scene& scene, int frames) {
-    Result<World> created = World::create(scene);
+std::optional<Summary> runRigidLab(const Scene& scene, int frames, bool noSleep) {
+    WorldOptions options;
+    if (noSleep)
+        options.effects = EffectsSetting::parse("auto,-sleeping");
+    Result<World> created = World::create(scene, options);
     if (!created) {
         std::fprintf(stderr, "rigidlab: %s\n", created.error().toString().c_str());
         return std::nullopt;
@@ -109,6 +113,10 @@ std::optional<Summary> runRigidLab(const Scene& scene, int frames) {
     const FrameDiagnostics d = world.diagnostics();
     s.awake = d.awakeBodies;
     s.contacts = d.contactPoints;
+    s.topY = -1e300;
+    for (size_t i = 0; i < world.bodyCount(); ++i)
+        if (!world.isAnchor(i))
+            s.topY = std::max(s.topY, world.centerOfMass(i).y);
     return s;
 }
 
@@ -155,7 +163,7 @@ struct BulletWorld {
 // Builds the scene in Bullet: Box -> btBoxShape, Sphere -> btSphereShape, Hull/Mesh -> btConvexHullShape of the
 // RigidLab collision hull relative to the centre of mass; anchors have mass 0; per-body friction and restitution
 // from the body's effective material, combined by the scene's rules. Shape margins are Bullet's defaults.
-std::unique_ptr<BulletWorld> buildBullet(const Scene& scene) {
+std::unique_ptr<BulletWorld> buildBullet(const Scene& scene, bool noSleep) {
     auto bw = std::make_unique<BulletWorld>();
     bw->world.setGravity(toBt(scene.world.gravity));
     gFrictionRule = scene.world.frictionCombine;
@@ -204,6 +212,8 @@ std::unique_ptr<BulletWorld> buildBullet(const Scene& scene) {
         if (!body.anchor) {
             rb->setLinearVelocity(toBt(body.velocity));
             rb->setAngularVelocity(toBt(body.angularVelocity));
+            if (noSleep)
+                rb->setActivationState(DISABLE_DEACTIVATION);
         }
         bw->world.addRigidBody(rb.get());
         bw->shapes.push_back(std::move(shape));
@@ -212,15 +222,20 @@ std::unique_ptr<BulletWorld> buildBullet(const Scene& scene) {
     return bw;
 }
 
-std::optional<Summary> runBullet(const Scene& scene, int frames) {
-    std::unique_ptr<BulletWorld> bw = buildBullet(scene);
+std::optional<Summary> runBullet(const Scene& scene, int frames, bool noSleep) {
+    std::unique_ptr<BulletWorld> bw = buildBullet(scene, noSleep);
     if (!bw)
         return std::nullopt;
     const btScalar dt = static_cast<btScalar>(1.0 / scene.world.fps);
     // maxSubSteps 0: exactly one internal step of dt per call (Bullet's default 10 solver iterations).
     Summary s = summarize(timeSteps(frames, [&] { bw->world.stepSimulation(dt, 0); }));
-    for (const auto& rb : bw->bodies)
-        s.awake += !rb->isStaticObject() && rb->isActive() ? 1 : 0;
+    s.topY = -1e300;
+    for (const auto& rb : bw->bodies) {
+        if (rb->isStaticObject())
+            continue;
+        s.awake += rb->isActive() ? 1 : 0;
+        s.topY = std::max(s.topY, static_cast<double>(rb->getCenterOfMassPosition().y()));
+    }
     for (int m = 0; m < bw->dispatcher.getNumManifolds(); ++m) {
         const btPersistentManifold* manifold = bw->dispatcher.getManifoldByIndexInternal(m);
         for (int k = 0; k < manifold->getNumContacts(); ++k)
@@ -233,15 +248,16 @@ std::optional<Summary> runBullet(const Scene& scene, int frames) {
 
 void printSide(const char* engine, const std::string& name, size_t bodies, int frames, const Summary& s) {
     std::printf("%-9s %-14s bodies=%-5zu frames=%-4d wall_median_ms=%8.3f wall_p95_ms=%8.3f cpu_median_ms=%8.3f "
-                "cpu_mean_ms=%8.3f awake=%-5d contacts=%d\n",
+                "cpu_mean_ms=%8.3f awake=%-5d contacts=%-5d top_y=%.3f\n",
                 engine, name.c_str(), bodies, frames, s.wallMedian, s.wallP95, s.cpuMedian, s.cpuMean, s.awake,
-                s.contacts);
+                s.contacts, s.topY);
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
     int frames = 300;
+    bool noSleep = false;
     std::vector<std::string> names;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
@@ -250,9 +266,13 @@ int main(int argc, char** argv) {
                 std::fprintf(stderr, "bench_world: --frames takes a positive number\n");
                 return 2;
             }
+        } else if (std::strcmp(argv[i], "--no-sleep") == 0) {
+            noSleep = true;
         } else if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
-            std::printf("Usage: bench_world [--frames N] [NAME|FILE|ramps ...]\n"
-                        "Default: stack20 pyramid20 ramps boxes1000, 300 frames each.\n");
+            std::printf("Usage: bench_world [--frames N] [--no-sleep] [NAME|FILE|ramps ...]\n"
+                        "Default: stack20 pyramid20 ramps boxes1000, 300 frames each.\n"
+                        "--no-sleep keeps every body awake in both engines (RigidLab: effects auto,-sleeping; "
+                        "Bullet: DISABLE_DEACTIVATION).\n");
             return 0;
         } else {
             names.push_back(argv[i]);
@@ -261,7 +281,8 @@ int main(int argc, char** argv) {
     if (names.empty())
         names = {"stack20", "pyramid20", "ramps", "boxes1000"};
 
-    std::printf("bench_world: %d frames per scene; RigidLab at scene defaults, threads 1\n", frames);
+    std::printf("bench_world: %d frames per scene; RigidLab at scene defaults, threads 1; sleeping %s\n", frames,
+                noSleep ? "off in both engines" : "at each engine's defaults");
 #ifdef RL_HAVE_BULLET
     std::printf("bullet: version %d, btScalar is %s, btDbvtBroadphase + btSequentialImpulseConstraintSolver, "
                 "%d iterations\n",
@@ -290,14 +311,14 @@ int main(int argc, char** argv) {
             scene = std::move(imported).value();
         }
         std::fprintf(stderr, "bench_world: %s (%zu bodies)\n", name.c_str(), scene.bodies.size());
-        const std::optional<Summary> rl = runRigidLab(scene, frames);
+        const std::optional<Summary> rl = runRigidLab(scene, frames, noSleep);
         if (!rl) {
             status = 1;
             continue;
         }
         printSide("rigidlab", name, scene.bodies.size(), frames, *rl);
 #ifdef RL_HAVE_BULLET
-        const std::optional<Summary> bt = runBullet(scene, frames);
+        const std::optional<Summary> bt = runBullet(scene, frames, noSleep);
         if (!bt) {
             status = 1;
             continue;

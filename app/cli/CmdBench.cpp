@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace rl::cli {
@@ -87,19 +88,21 @@ bool runWorld(World& world, int frames, const QString& label, bool quiet, BenchR
     QElapsedTimer clock;
     clock.start();
     qint64 lastReport = 0;
+    // On a terminal the progress line is rewritten in place; in a log it is one line per report.
+    const bool terminal = isatty(fileno(stderr)) != 0;
     for (int f = 0; f < frames; ++f) {
         const Clock::time_point start = Clock::now();
         world.step();
         stepMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
         const qint64 now = clock.elapsed();
-        if (!quiet && now - lastReport >= 500) {
+        if (!quiet && now - lastReport >= (terminal ? 500 : 5000)) {
             lastReport = now;
-            std::fprintf(stderr, "\rbench: %s frame %d/%d, %.1f s elapsed   ", qPrintable(label), f + 1, frames,
-                         now / 1000.0);
+            std::fprintf(stderr, "%sbench: %s frame %d/%d, %.1f s elapsed%s", terminal ? "\r" : "", qPrintable(label),
+                         f + 1, frames, now / 1000.0, terminal ? "   " : "\n");
             std::fflush(stderr);
         }
     }
-    if (!quiet && lastReport > 0)
+    if (!quiet && terminal && lastReport > 0)
         std::fputc('\n', stderr);
 
     out.bodies = world.bodyCount();

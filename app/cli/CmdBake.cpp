@@ -115,6 +115,10 @@ int runBake(const QStringList& arguments) {
         return kExitFailure;
     }
     World& world = created.value();
+    if (world.bodyCount() == 0) {
+        printError(QString::fromStdString(path) + ": the scene has no bodies to simulate");
+        return kExitFailure;
+    }
     const size_t frameCount =
         frames > 0 ? static_cast<size_t>(frames) : static_cast<size_t>(std::llround(seconds * world.fps()));
 

@@ -403,6 +403,9 @@ Result<std::string> readFileBytes(const std::string& path) {
         return Error{path, 0, {}, "file not found"};
     if (fs::is_directory(status))
         return Error{path, 0, {}, "is a directory, not a file"};
+    // A device or a pipe (/dev/zero, a FIFO) could be read forever; scenes are regular files.
+    if (!fs::is_regular_file(status))
+        return Error{path, 0, {}, "is not a regular file"};
     const std::uintmax_t size = fs::file_size(path, ec);
     if (!ec && size > kMaxFileBytes)
         return Error{path, 0, {}, "file is larger than " + std::to_string(kMaxFileBytes >> 20) + " MiB"};

@@ -84,6 +84,16 @@ private slots:
         QVERIFY2(r.err.contains(fileName.toUtf8()), r.err.constData());
     }
 
+    void deviceFileIsRefused() {
+        // A scene path that names a device must fail at once, not read forever.
+        QTemporaryDir dir;
+        const QString link = dir.filePath("zero.obj");
+        QVERIFY(QFile::link("/dev/zero", link));
+        const Run r = runCli({"info", link});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("regular file"), r.err.constData());
+    }
+
     void missingFile() {
         const Run r = runCli({"info", "/nonexistent/scene.obj"});
         QCOMPARE(r.exitCode, 1);

@@ -1,6 +1,9 @@
 #include "MainWindow.h"
 
 #include "document/SceneDocument.h"
+#include "document/commands/RemoveBodiesCommand.h"
+#include "document/commands/SetBodiesCommand.h"
+#include "inspector/InspectorWidget.h"
 #include "outliner/OutlinerModel.h"
 #include "viewport/ScenePresenter.h"
 #include "viewport/Viewport.h"
@@ -20,7 +23,9 @@
 #include <QSettings>
 #include <QSortFilterProxyModel>
 #include <QStatusBar>
+#include <QToolBar>
 #include <QTreeView>
+#include <QUndoView>
 #include <QVBoxLayout>
 
 namespace rl {
@@ -115,6 +120,24 @@ void MainWindow::createDocks() {
     layout->addWidget(m_outlinerView);
     dock->setWidget(panel);
     addDockWidget(Qt::LeftDockWidgetArea, dock);
+
+    auto* inspectorDock = new QDockWidget(tr("Inspector"), this);
+    inspectorDock->setObjectName("InspectorDock");
+    m_inspector = new InspectorWidget(m_document, inspectorDock);
+    inspectorDock->setWidget(m_inspector);
+    addDockWidget(Qt::RightDockWidgetArea, inspectorDock);
+    connect(this, &MainWindow::selectionChanged, m_inspector, &InspectorWidget::setSelection);
+
+    auto* historyDock = new QDockWidget(tr("History"), this);
+    historyDock->setObjectName("HistoryDock");
+    auto* history = new QUndoView(m_document->undoStack(), historyDock);
+    history->setObjectName("HistoryView");
+    history->setEmptyLabel(tr("<opened scene>"));
+    historyDock->setWidget(history);
+    addDockWidget(Qt::RightDockWidgetArea, historyDock);
+    tabifyDockWidget(inspectorDock, historyDock);
+    inspectorDock->raise();
+    resizeDocks({inspectorDock}, {380}, Qt::Horizontal); // a saved window state overrides this
 }
 
 void MainWindow::createActions() {
@@ -131,12 +154,85 @@ void MainWindow::createActions() {
     QAction* quitAction = fileMenu->addAction(tr("&Quit"), this, &QWidget::close);
     quitAction->setShortcut(QKeySequence::Quit);
 
+    createEditActions();
+
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     helpMenu->addAction(tr("&About RigidLab"), this, [this] {
         QMessageBox::about(this, tr("About RigidLab"),
                            tr("<b>RigidLab</b> %1<br>An editor and simulator for 3D rigid-body scenes.")
                                .arg(QApplication::applicationVersion()));
     });
+}
+
+void MainWindow::createEditActions() {
+    QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
+    QToolBar* toolBar = addToolBar(tr("Edit"));
+    toolBar->setObjectName("EditToolBar");
+    QUndoStack* stack = m_document->undoStack();
+
+    QAction* undoAction = stack->createUndoAction(this, tr("&Undo"));
+    undoAction->setObjectName("UndoAction");
+    undoAction->setShortcut(QKeySequence::Undo);
+    undoAction->setIcon(QIcon::fromTheme("edit-undo"));
+    QAction* redoAction = stack->createRedoAction(this, tr("&Redo"));
+    redoAction->setObjectName("RedoAction");
+    // Ctrl+Shift+Z as in Blender, Ctrl+Y as on Windows.
+    redoAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    redoAction->setIcon(QIcon::fromTheme("edit-redo"));
+
+    QAction* deleteAction = new QAction(QIcon::fromTheme("edit-delete"), tr("&Delete"), this);
+    deleteAction->setObjectName("DeleteAction");
+    deleteAction->setShortcut(QKeySequence::Delete);
+    deleteAction->setStatusTip(tr("Delete the selected bodies"));
+    connect(deleteAction, &QAction::triggered, this, &MainWindow::deleteSelection);
+
+    // Alt+A: Shift+A is Blender's "Add" and Ctrl+A "Select all", which the editor may want later.
+    QAction* anchorAction = new QAction(tr("Toggle &Anchor"), this);
+    anchorAction->setObjectName("ToggleAnchorAction");
+    anchorAction->setShortcut(QKeySequence(Qt::ALT | Qt::Key_A));
+    anchorAction->setStatusTip(tr("Make the selected bodies static, or dynamic again when all are static"));
+    connect(anchorAction, &QAction::triggered, this, &MainWindow::toggleAnchor);
+
+    auto updateEnabled = [this, deleteAction, anchorAction] {
+        deleteAction->setEnabled(!m_selection.isEmpty());
+        anchorAction->setEnabled(!m_selection.isEmpty());
+    };
+    connect(this, &MainWindow::selectionChanged, this, updateEnabled);
+    updateEnabled();
+
+    editMenu->addAction(undoAction);
+    editMenu->addAction(redoAction);
+    editMenu->addSeparator();
+    editMenu->addAction(deleteAction);
+    editMenu->addAction(anchorAction);
+    toolBar->addAction(undoAction);
+    toolBar->addAction(redoAction);
+    toolBar->addSeparator();
+    toolBar->addAction(deleteAction);
+    toolBar->addAction(anchorAction);
+}
+
+void MainWindow::deleteSelection() {
+    if (m_selection.isEmpty())
+        return;
+    const QList<int> bodies = m_selection;
+    setSelectedBodies({}); // the indices shift once the bodies are gone
+    m_document->undoStack()->push(new RemoveBodiesCommand(m_document, bodies));
+}
+
+void MainWindow::toggleAnchor() {
+    if (m_selection.isEmpty())
+        return;
+    bool allAnchored = true;
+    for (int body : m_selection)
+        allAnchored = allAnchored && m_document->body(body).anchor;
+    std::vector<BodyDef> after;
+    for (int body : m_selection) {
+        after.push_back(m_document->body(body));
+        after.back().anchor = !allAnchored;
+    }
+    m_document->undoStack()->push(
+        new SetBodiesCommand(m_document, m_selection, std::move(after), allAnchored ? tr("Unanchor") : tr("Anchor")));
 }
 
 void MainWindow::rebuildViewport() {
@@ -159,6 +255,7 @@ void MainWindow::setSelectedBodies(const QList<int>& bodies) {
         m_selection = sorted;
         m_viewport->setSelection(m_selection);
         syncOutlinerSelection();
+        emit selectionChanged(m_selection);
     }
     if (m_selection.isEmpty())
         m_selectionLabel->setText(tr("nothing selected"));

@@ -13,6 +13,7 @@ class QSortFilterProxyModel;
 namespace rl {
 
 class SceneDocument;
+class InspectorWidget;
 class OutlinerModel;
 class ScenePresenter;
 class Viewport;
@@ -26,12 +27,16 @@ public:
     SceneDocument* document() const { return m_document; }
     QTreeView* outlinerView() const { return m_outlinerView; }
     Viewport* viewport() const { return m_viewport; }
+    InspectorWidget* inspector() const { return m_inspector; }
     // Selected body indices, in ascending order. The viewport and the outliner always show the same selection.
     QList<int> selectedBodies() const { return m_selection; }
     void setSelectedBodies(const QList<int>& bodies);
 
     // Opens a scene file; shows the core's error (file, object, problem) in a message box when it fails.
     bool openFile(const QString& path);
+
+signals:
+    void selectionChanged(const QList<int>& bodies);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -43,6 +48,9 @@ private:
     void updateStatus();
     void rebuildViewport();
     void syncOutlinerSelection();
+    void createEditActions();
+    void deleteSelection();
+    void toggleAnchor();
 
     SceneDocument* m_document = nullptr;
     OutlinerModel* m_outlinerModel = nullptr;
@@ -52,6 +60,7 @@ private:
     QLabel* m_selectionLabel = nullptr;
     QLabel* m_frameTimeLabel = nullptr;
     Viewport* m_viewport = nullptr;
+    InspectorWidget* m_inspector = nullptr;
     std::unique_ptr<ScenePresenter> m_presenter;
     QList<int> m_selection;
     bool m_syncingSelection = false;

@@ -1,0 +1,196 @@
+// The inspector in the main window: edits go through undo commands, multi-selection shows mixed values and edits
+// every selected body in one undo step.
+#include "MainWindow.h"
+#include "document/SceneDocument.h"
+#include "inspector/InspectorWidget.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSurfaceFormat>
+#include <QTest>
+
+class TestInspector : public QObject {
+    Q_OBJECT
+public:
+    static void initMain() {
+        QSurfaceFormat format;
+        format.setVersion(3, 3);
+        format.setProfile(QSurfaceFormat::CoreProfile);
+        format.setDepthBufferSize(24);
+        QSurfaceFormat::setDefaultFormat(format);
+        const QString runtime = QDir::tempPath() + "/rigidlab-test-runtime";
+        QDir().mkpath(runtime);
+        QFile::setPermissions(runtime, QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+        qputenv("XDG_RUNTIME_DIR", runtime.toUtf8());
+        QCoreApplication::setOrganizationName("RigidLabTests");
+    }
+
+private:
+    template <class T>
+    static T* child(rl::MainWindow& window, const char* name) {
+        T* widget = window.inspector()->findChild<T*>(QString::fromLatin1(name));
+        if (!widget)
+            qFatal("no inspector child %s", name);
+        return widget;
+    }
+
+    static bool openStack(rl::MainWindow& window) {
+        window.show();
+        return QTest::qWaitForWindowExposed(&window) &&
+               window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/stack.obj"));
+    }
+
+private slots:
+    void anchorCheckBoxUndoRedo() {
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        rl::SceneDocument* document = window.document();
+        QVERIFY(!document->body(1).anchor);
+        window.setSelectedBodies({1});
+        QCOMPARE(window.inspector()->selection(), QList<int>{1});
+        auto* anchor = child<QCheckBox>(window, "InspectorAnchor");
+        QVERIFY(anchor->isVisible());
+        QCOMPARE(anchor->checkState(), Qt::Unchecked);
+        QTest::mouseClick(anchor, Qt::LeftButton, {}, QPoint(6, anchor->height() / 2));
+        QVERIFY(document->body(1).anchor);
+        QCOMPARE(document->undoStack()->count(), 1);
+        document->undoStack()->undo();
+        QVERIFY(!document->body(1).anchor);
+        QCOMPARE(anchor->checkState(), Qt::Unchecked); // the view follows the document
+        document->undoStack()->redo();
+        QVERIFY(document->body(1).anchor);
+        QCOMPARE(anchor->checkState(), Qt::Checked);
+    }
+
+    void frictionOverride() {
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        rl::SceneDocument* document = window.document();
+        window.setSelectedBodies({2});
+        QVERIFY(!document->body(2).friction);
+        auto* enabled = child<QCheckBox>(window, "InspectorFrictionEnabled");
+        auto* value = child<QDoubleSpinBox>(window, "InspectorFriction");
+        QVERIFY(!value->isEnabled());
+        const double woodFriction = document->scene().effectiveMaterial(document->body(2)).friction;
+        QCOMPARE(value->value(), woodFriction); // an unset override shows the material's value
+        QTest::mouseClick(enabled, Qt::LeftButton, {}, QPoint(6, enabled->height() / 2));
+        QVERIFY(document->body(2).friction.has_value());
+        QCOMPARE(*document->body(2).friction, woodFriction);
+        QVERIFY(value->isEnabled());
+        // Typing a value commits once, on Enter.
+        value->setFocus();
+        value->selectAll();
+        QTest::keyClicks(value, "0.85");
+        QCOMPARE(*document->body(2).friction, woodFriction); // keyboard tracking is off
+        QTest::keyClick(value, Qt::Key_Return);
+        QCOMPARE(*document->body(2).friction, 0.85);
+        const int steps = document->undoStack()->count();
+        // Arrow steps merge into the previous friction edit.
+        value->stepUp();
+        value->stepUp();
+        QCOMPARE(*document->body(2).friction, 0.95);
+        QCOMPARE(document->undoStack()->count(), steps);
+        document->undoStack()->undo();
+        QCOMPARE(*document->body(2).friction, woodFriction);
+        document->undoStack()->undo();
+        QVERIFY(!document->body(2).friction);
+        QVERIFY(!value->isEnabled());
+    }
+
+    void positionAndRotation() {
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        rl::SceneDocument* document = window.document();
+        window.setSelectedBodies({3});
+        const rl::BodyDef before = document->body(3);
+        child<QDoubleSpinBox>(window, "InspectorPositionY")->setValue(7.5);
+        QCOMPARE(document->body(3).position.y, 7.5);
+        QCOMPARE(document->body(3).position.x, before.position.x);
+        child<QDoubleSpinBox>(window, "InspectorRotationZ")->setValue(90.0);
+        const rl::Vec3 turned = document->body(3).orientation * rl::Vec3(1.0, 0.0, 0.0);
+        QVERIFY(glm::length(turned - rl::Vec3(0.0, 1.0, 0.0)) < 1e-9); // +90° about Z takes X to Y
+        QCOMPARE(document->undoStack()->count(), 2);
+        document->undoStack()->undo();
+        document->undoStack()->undo();
+        QVERIFY(document->body(3) == before);
+    }
+
+    void multiSelectionMaterial() {
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        rl::SceneDocument* document = window.document();
+        // Body 0 is the concrete anchor, body 1 a wooden cube.
+        QVERIFY(document->body(0).material != document->body(1).material);
+        window.setSelectedBodies({1});
+        child<QDoubleSpinBox>(window, "InspectorPositionY")->setValue(3.0); // OBJ bodies all sit at the origin
+        QVERIFY(document->body(0).position.y != document->body(1).position.y);
+        window.setSelectedBodies({0, 1});
+        auto* material = child<QComboBox>(window, "InspectorMaterial");
+        QCOMPARE(material->currentIndex(), -1);
+        QVERIFY(material->currentText().isEmpty());
+        QCOMPARE(child<QCheckBox>(window, "InspectorAnchor")->checkState(), Qt::PartiallyChecked);
+        QCOMPARE(child<QDoubleSpinBox>(window, "InspectorPositionY")->text(), rl::InspectorWidget::mixedText());
+        QVERIFY(child<QLineEdit>(window, "InspectorName")->text().isEmpty());
+        const std::vector<rl::BodyDef> before = document->scene().bodies;
+
+        const int steel = material->findText(QStringLiteral("Steel"));
+        QVERIFY(steel >= 0);
+        material->setCurrentIndex(steel);
+        emit material->activated(steel); // what a user's pick in the popup emits
+        QCOMPARE(document->body(0).material, std::string("Steel"));
+        QCOMPARE(document->body(1).material, std::string("Steel"));
+        QCOMPARE(document->undoStack()->count(), 2);
+        QCOMPARE(material->currentText(), QStringLiteral("Steel"));
+        document->undoStack()->undo();
+        QVERIFY(document->scene().bodies == before);
+        QCOMPARE(material->currentIndex(), -1);
+    }
+
+    void editMenuActions() {
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        rl::SceneDocument* document = window.document();
+        const std::vector<rl::BodyDef> before = document->scene().bodies;
+        auto* toggle = window.findChild<QAction*>("ToggleAnchorAction");
+        auto* remove = window.findChild<QAction*>("DeleteAction");
+        QVERIFY(toggle && remove);
+        QVERIFY(!remove->isEnabled());
+        window.setSelectedBodies({0, 4});
+        toggle->trigger(); // mixed -> all anchored
+        QVERIFY(document->body(0).anchor && document->body(4).anchor);
+        toggle->trigger(); // all anchored -> none
+        QVERIFY(!document->body(0).anchor && !document->body(4).anchor);
+        remove->trigger();
+        QCOMPARE(document->bodyCount(), static_cast<int>(before.size()) - 2);
+        QVERIFY(window.selectedBodies().isEmpty());
+        auto* undo = window.findChild<QAction*>("UndoAction");
+        QVERIFY(undo);
+        QCOMPARE(undo->shortcut(), QKeySequence(QKeySequence::Undo));
+        for (int i = 0; i < 3; ++i)
+            undo->trigger();
+        QVERIFY(document->scene().bodies == before);
+    }
+
+    void screenshot() {
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        window.setSelectedBodies({1});
+        QTest::qWait(50);
+        QVERIFY(window.inspector()->isVisible());
+        QVERIFY(child<QLabel>(window, "InspectorComputedMass")->text().contains(QStringLiteral("kg")));
+        QCOMPARE(child<QLabel>(window, "InspectorHull")->text(), QStringLiteral("8")); // a cube's corners
+        const QString path = QDir::tempPath() + "/rigidlab-inspector.png";
+        QVERIFY(window.grab().save(path));
+        window.setSelectedBodies({0, 1});
+        QTest::qWait(50);
+        QVERIFY(window.grab().save(QDir::tempPath() + "/rigidlab-inspector-multi.png"));
+    }
+};
+
+QTEST_MAIN(TestInspector)
+#include "tst_inspector.moc"

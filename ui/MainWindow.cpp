@@ -16,6 +16,7 @@
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QItemSelectionModel>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
@@ -193,6 +194,10 @@ void MainWindow::createEditActions() {
     anchorAction->setStatusTip(tr("Make the selected bodies static, or dynamic again when all are static"));
     connect(anchorAction, &QAction::triggered, this, &MainWindow::toggleAnchor);
 
+    // Qt retries a keypad key without its keypad modifier, so the keypad's Del (numpad "." with Num Lock off) would
+    // delete bodies; the viewport uses it to frame the selection, as Blender does.
+    m_viewport->installEventFilter(this);
+
     auto updateEnabled = [this, deleteAction, anchorAction] {
         deleteAction->setEnabled(!m_selection.isEmpty());
         anchorAction->setEnabled(!m_selection.isEmpty());
@@ -306,6 +311,17 @@ void MainWindow::updateStatus() {
         anchors += body.anchor ? 1 : 0;
     m_bodyCountLabel->setText(tr("%n bodies", "", m_document->bodyCount()) + QStringLiteral(" · ") +
                               tr("%n anchors", "", anchors));
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_viewport && event->type() == QEvent::ShortcutOverride) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        if (key->key() == Qt::Key_Delete && (key->modifiers() & Qt::KeypadModifier)) {
+            event->accept(); // the viewport gets it as a key press
+            return true;
+        }
+    }
+    return QMainWindow::eventFilter(watched, event);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

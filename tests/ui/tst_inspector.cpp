@@ -3,6 +3,7 @@
 #include "MainWindow.h"
 #include "document/SceneDocument.h"
 #include "inspector/InspectorWidget.h"
+#include "viewport/Viewport.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -174,6 +175,42 @@ private slots:
         for (int i = 0; i < 3; ++i)
             undo->trigger();
         QVERIFY(document->scene().bodies == before);
+    }
+
+    void deleteKeyAndKeypadDelete() {
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        rl::SceneDocument* document = window.document();
+        const int count = document->bodyCount();
+        window.setSelectedBodies({5});
+        window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&window)); // window shortcuts need the active window
+        window.viewport()->setFocus();
+        // The keypad's Del frames the selection in the viewport; it must not delete.
+        QTest::keyClick(window.viewport(), Qt::Key_Delete, Qt::KeypadModifier);
+        QCOMPARE(document->bodyCount(), count);
+        QTest::keyClick(window.viewport(), Qt::Key_Delete);
+        QCOMPARE(document->bodyCount(), count - 1);
+        document->undoStack()->undo();
+        QCOMPARE(document->bodyCount(), count);
+    }
+
+    void renameSelectedBodies() {
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        rl::SceneDocument* document = window.document();
+        window.setSelectedBodies({2, 3});
+        auto* name = child<QLineEdit>(window, "InspectorName");
+        name->setText(QStringLiteral("Crate"));
+        emit name->editingFinished();
+        QCOMPARE(document->body(2).name, std::string("Crate"));
+        QCOMPARE(document->body(3).name, std::string("Crate"));
+        QCOMPARE(name->text(), QStringLiteral("Crate"));
+        QCOMPARE(document->undoStack()->count(), 1);
+        document->undoStack()->undo();
+        QCOMPARE(document->body(2).name, std::string("Cube.001"));
+        QCOMPARE(document->body(3).name, std::string("Cube.002"));
+        QVERIFY(name->text().isEmpty()); // mixed again
     }
 
     void screenshot() {

@@ -196,6 +196,7 @@ Quat World::rotationSinceStart(size_t i) const {
 void World::step() {
     {
         StageTimer t(m_profile, Stage::UpdateBroadphase);
+        refreshTransforms();
         updateBroadphase();
     }
     {
@@ -223,6 +224,14 @@ void World::step() {
     m_profile.count(Counter::Steps, 1);
 }
 
+void World::refreshTransforms() {
+    // Bodies move only in solve() and CCD, both after the narrowphase, so these stay valid for the whole of
+    // broadphase and narrowphase. Every body, not only the moving ones: one that fell asleep last step moved first.
+    m_transforms.resize(m_state.size());
+    for (uint32_t i = 0; i < m_state.size(); ++i)
+        m_transforms[i] = transform(i);
+}
+
 void World::updateBroadphase() {
     const Real dt = 1.0 / m_fps;
     for (uint32_t i = 0; i < m_state.size(); ++i) {
@@ -231,7 +240,7 @@ void World::updateBroadphase() {
         // The proxy must cover everything this step's speculative contacts may need: the box swept by this
         // step's motion, grown by the speculative distance. The tree only reinserts when that leaves the fat box,
         // so a body that turns around (a ball at the top of its bounce) still finds the floor in time.
-        const Aabb tight = m_shapes[i].worldBounds(transform(i));
+        const Aabb tight = m_shapes[i].worldBounds(m_transforms[i]);
         const Vec3 motion = m_state.linearVelocity[i] * dt;
         const Vec3 grow(m_tuning.speculativeDistance + glm::length(m_state.angularVelocity[i]) * m_radius[i] * dt);
         Aabb swept{glm::min(tight.min, tight.min + motion) - grow, glm::max(tight.max, tight.max + motion) + grow};
@@ -283,7 +292,7 @@ void World::collidePair(Contact& c) const {
     Manifold fresh;
     fresh.bodyA = a;
     fresh.bodyB = b;
-    collide(m_shapes[a], transform(a), m_shapes[b], transform(b), margin, fresh);
+    collide(m_shapes[a], m_transforms[a], m_shapes[b], m_transforms[b], margin, fresh);
     // Points that persist (same features, or nearly the same place) keep their impulses for warm starting.
     warmStart(c.manifold, fresh);
     c.manifold = fresh;

@@ -125,6 +125,7 @@ private:
     void continuousCollision();
     void updateSleep();
     void collidePair(Contact& contact) const;
+    void refreshTransforms();
     void wakeIsland(uint32_t body);
 
     Real m_fps = 60.0;
@@ -155,6 +156,9 @@ private:
     std::vector<Contact> m_contacts; // in broadphase pair order
     std::vector<uint32_t> m_island;  // island root per body (union-find), recomputed every step
     ContactSolver m_solver;
+    // Shape-to-world transform per body, taken once at the start of the step: the broadphase and every pair of
+    // the narrowphase need it, and each mat3_cast costs more than the lookup.
+    std::vector<Transform> m_transforms;
     std::vector<Vec3> m_stepStartPosition;
     std::vector<Quat> m_stepStartOrientation;
 

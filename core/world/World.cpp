@@ -253,7 +253,8 @@ void World::findPairs() {
     m_broadPhase.updatePairs();
     const auto pairs = m_broadPhase.pairs();
     // Merge the sorted pair list with the sorted contact list, keeping the manifolds of pairs that persist.
-    std::vector<Contact> next;
+    std::vector<Contact>& next = m_nextContacts;
+    next.clear();
     next.reserve(pairs.size());
     size_t old = 0;
     for (const BroadPhasePair& p : pairs) {
@@ -273,7 +274,7 @@ void World::findPairs() {
         c.restitution = combine(m_restitutionRule, m_restitution[p.idA], m_restitution[p.idB]);
         next.push_back(c);
     }
-    m_contacts = std::move(next);
+    std::swap(m_contacts, next);
     m_profile.count(Counter::Pairs, m_contacts.size());
 }
 
@@ -300,8 +301,8 @@ void World::collidePair(Contact& c) const {
 
 void World::narrowphase() {
     // Pairs where neither body moves keep their manifold (both asleep, or asleep against an anchor).
-    std::vector<uint32_t> active;
-    active.reserve(m_contacts.size());
+    std::vector<uint32_t>& active = m_narrowActive;
+    active.clear();
     for (uint32_t k = 0; k < m_contacts.size(); ++k)
         if (m_state.isMoving(m_contacts[k].bodyA) || m_state.isMoving(m_contacts[k].bodyB))
             active.push_back(k);
@@ -383,16 +384,20 @@ void World::solve() {
     const uint32_t n = m_state.size();
 
     // Solver bodies: entry 0 stands for every immovable body (anchors and sleepers); moving bodies follow.
-    std::vector<uint32_t> solverIndex(n, 0);
-    std::vector<uint32_t> moving;
+    std::vector<uint32_t>& solverIndex = m_solverIndex;
+    std::vector<uint32_t>& moving = m_moving;
+    solverIndex.assign(n, 0);
+    moving.clear();
     for (uint32_t i = 0; i < n; ++i)
         if (m_state.isMoving(i)) {
             solverIndex[i] = static_cast<uint32_t>(moving.size() + 1);
             moving.push_back(i);
         }
     m_profile.count(Counter::AwakeBodies, moving.size());
-    std::vector<SolverBody> bodies(moving.size() + 1);
-    std::vector<Vec3> centers(moving.size() + 1, Vec3(0.0));
+    std::vector<SolverBody>& bodies = m_solverBodies;
+    std::vector<Vec3>& centers = m_solverCenters;
+    bodies.assign(moving.size() + 1, SolverBody{});
+    centers.assign(moving.size() + 1, Vec3(0.0));
     m_stepStartPosition.resize(n);
     m_stepStartOrientation.resize(n);
     for (size_t k = 0; k < moving.size(); ++k) {
@@ -407,10 +412,18 @@ void World::solve() {
     }
 
     // Contacts the solver sees: touching manifolds with at least one moving body.
-    std::vector<uint32_t> activeContacts;
-    std::vector<Manifold> manifolds;
-    std::vector<uint32_t> indexA, indexB;
-    std::vector<Real> friction, restitution;
+    std::vector<uint32_t>& activeContacts = m_activeContacts;
+    std::vector<Manifold>& manifolds = m_solverManifolds;
+    std::vector<uint32_t>& indexA = m_solverIndexA;
+    std::vector<uint32_t>& indexB = m_solverIndexB;
+    std::vector<Real>& friction = m_solverFriction;
+    std::vector<Real>& restitution = m_solverRestitution;
+    activeContacts.clear();
+    manifolds.clear();
+    indexA.clear();
+    indexB.clear();
+    friction.clear();
+    restitution.clear();
     for (uint32_t k = 0; k < m_contacts.size(); ++k) {
         const Contact& c = m_contacts[k];
         if (c.manifold.pointCount == 0 || (!m_state.isMoving(c.bodyA) && !m_state.isMoving(c.bodyB)))

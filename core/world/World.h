@@ -159,6 +159,13 @@ private:
     // Shape-to-world transform per body, taken once at the start of the step: the broadphase and every pair of
     // the narrowphase need it, and each mat3_cast costs more than the lookup.
     std::vector<Transform> m_transforms;
+    // Scratch of findPairs() and solve(), kept between steps so that a step does not allocate.
+    std::vector<Contact> m_nextContacts;
+    std::vector<uint32_t> m_narrowActive, m_solverIndex, m_moving, m_activeContacts, m_solverIndexA, m_solverIndexB;
+    std::vector<SolverBody> m_solverBodies;
+    std::vector<Vec3> m_solverCenters;
+    std::vector<Manifold> m_solverManifolds;
+    std::vector<Real> m_solverFriction, m_solverRestitution;
     std::vector<Vec3> m_stepStartPosition;
     std::vector<Quat> m_stepStartOrientation;
 

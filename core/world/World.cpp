@@ -252,6 +252,15 @@ void World::updateBroadphase() {
 void World::findPairs() {
     m_broadPhase.updatePairs();
     const auto pairs = m_broadPhase.pairs();
+    // Most steps the pair list is the one we already hold; then the merge below would only copy every contact.
+    const bool unchanged =
+        pairs.size() == m_contacts.size() &&
+        std::equal(pairs.begin(), pairs.end(), m_contacts.begin(),
+                   [](const BroadPhasePair& p, const Contact& c) { return p.idA == c.bodyA && p.idB == c.bodyB; });
+    if (unchanged) {
+        m_profile.count(Counter::Pairs, m_contacts.size());
+        return;
+    }
     // Merge the sorted pair list with the sorted contact list, keeping the manifolds of pairs that persist.
     std::vector<Contact>& next = m_nextContacts;
     next.clear();

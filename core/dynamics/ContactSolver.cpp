@@ -51,8 +51,6 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
                             std::span<const Vec3> centers, Real h, const ContactSolverSettings& settings) {
     m_settings = settings;
     m_inverseH = h > 0.0 ? 1.0 / h : 0.0;
-    // Soft constraint as a damped spring (Catto, "Solver2D" 2024): omega = 2 pi f, and with zeta the damping ratio
-    // the implicit-Euler spring gives bias rate omega / (2 zeta + h omega) and a mass scale below 1.
     m_soft = softness(2.0 * kPi * settings.contactHertz, settings.dampingRatio, h);
 
     m_constraints.resize(manifolds.size());

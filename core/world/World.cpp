@@ -14,10 +14,6 @@ namespace rl {
 
 namespace {
 
-Real maxComponent(const Vec3& v) {
-    return std::max({v.x, v.y, v.z});
-}
-
 // Union-find with path halving; deterministic because unions always keep the smaller index as the root.
 uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t i) {
     while (parent[i] != i) {
@@ -36,13 +32,6 @@ void unite(std::vector<uint32_t>& parent, uint32_t a, uint32_t b) {
         parent[b] = a;
     else
         parent[a] = b;
-}
-
-Quat integrateRotation(const Quat& q, const Vec3& w, Real t) {
-    const Real angle = glm::length(w) * t;
-    if (angle < 1e-12)
-        return q;
-    return glm::normalize(glm::angleAxis(angle, w / glm::length(w)) * q);
 }
 
 } // namespace

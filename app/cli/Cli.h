@@ -5,7 +5,10 @@
 #include <QString>
 #include <QStringList>
 
+#include <optional>
 #include <string>
+
+class QCommandLineParser;
 
 namespace rl::cli {
 
@@ -20,6 +23,10 @@ int runBake(const QStringList& arguments);
 int runAccuracy(const QStringList& arguments);
 int runBench(const QStringList& arguments);
 int runDiff(const QStringList& arguments);
+
+// Parses a subcommand's arguments. Returns the exit code when the command is already done (bad usage: 2, with the
+// parser's message on stderr; --help: 0, with the help on stdout), or nothing when the command should go on.
+std::optional<int> parseArguments(QCommandLineParser& parser, const QStringList& arguments, const char* command);
 
 // Messages for people go to stderr; data goes to stdout or files.
 void printError(const QString& message);

@@ -16,14 +16,8 @@ int runAccuracy(const QStringList& arguments) {
     parser.addHelpOption();
     parser.addOption({"csv", "Write every row to <file> as CSV.", "file"});
     parser.addOption({"plot", "Write a log-log plot of error against CPU time to <file> (SVG).", "file"});
-    if (!parser.parse(arguments)) {
-        printError("rigidlab-cli accuracy: " + parser.errorText());
-        return kExitUsage;
-    }
-    if (parser.isSet("help")) {
-        printOut(parser.helpText());
-        return kExitOk;
-    }
+    if (const std::optional<int> done = parseArguments(parser, arguments, "accuracy"))
+        return *done;
     if (!parser.positionalArguments().isEmpty()) {
         printError(QStringLiteral("rigidlab-cli accuracy: takes no positional arguments (see --help)"));
         return kExitUsage;

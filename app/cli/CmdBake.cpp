@@ -52,14 +52,8 @@ int runBake(const QStringList& arguments) {
     parser.addOption({"threads", "Worker threads (results are identical for any count).", "t"});
     parser.addOption({"profile", "Print per-stage times, the active effects and counters to stdout."});
     parser.addOption({"quiet", "No progress on stderr."});
-    if (!parser.parse(arguments)) {
-        printError("rigidlab-cli bake: " + parser.errorText());
-        return kExitUsage;
-    }
-    if (parser.isSet("help")) {
-        printOut(parser.helpText());
-        return kExitOk;
-    }
+    if (const std::optional<int> done = parseArguments(parser, arguments, "bake"))
+        return *done;
     if (parser.positionalArguments().size() != 1) {
         printError(QStringLiteral("rigidlab-cli bake: expected exactly one scene file (see --help)"));
         return kExitUsage;

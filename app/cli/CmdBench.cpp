@@ -196,14 +196,8 @@ int runBench(const QStringList& arguments) {
     parser.addOption({"threads", "Worker threads for the narrowphase (default 1).", "t"});
     parser.addOption({"scaling", "Run scale1k ... scale16k and fit the exponent of cost vs bodies (log-log)."});
     parser.addOption({"quiet", "No progress on stderr."});
-    if (!parser.parse(arguments)) {
-        printError("rigidlab-cli bench: " + parser.errorText());
-        return kExitUsage;
-    }
-    if (parser.isSet("help")) {
-        printOut(parser.helpText());
-        return kExitOk;
-    }
+    if (const std::optional<int> done = parseArguments(parser, arguments, "bench"))
+        return *done;
 
     std::optional<int> frames;
     if (parser.isSet("frames")) {

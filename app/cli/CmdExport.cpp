@@ -68,14 +68,8 @@ int runExport(const QStringList& arguments) {
     parser.addOption({"bake", "Write a .bake in the current format to <file>.", "file"});
     parser.addOption({"frames", "CSV only: frame range A:B (inclusive), A: or A.", "range"});
     parser.addOption({"bodies", "CSV only: comma-separated body indices or names.", "list"});
-    if (!parser.parse(arguments)) {
-        printError("rigidlab-cli export: " + parser.errorText());
-        return kExitUsage;
-    }
-    if (parser.isSet("help")) {
-        printOut(parser.helpText());
-        return kExitOk;
-    }
+    if (const std::optional<int> done = parseArguments(parser, arguments, "export"))
+        return *done;
     if (parser.positionalArguments().size() != 1) {
         printError(QStringLiteral("rigidlab-cli export: expected exactly one input .bake file (see --help)"));
         return kExitUsage;

@@ -36,14 +36,8 @@ int runInfo(const QStringList& arguments) {
     parser.addHelpOption();
     parser.addPositionalArgument("scene", "Scene file (.rlscene, .obj or any format assimp reads).");
     parser.addOption({"json", "Print one JSON object instead of text."});
-    if (!parser.parse(arguments)) {
-        printError("rigidlab-cli info: " + parser.errorText());
-        return kExitUsage;
-    }
-    if (parser.isSet("help")) {
-        printOut(parser.helpText());
-        return kExitOk;
-    }
+    if (const std::optional<int> done = parseArguments(parser, arguments, "info"))
+        return *done;
     if (parser.positionalArguments().size() != 1) {
         printError(QStringLiteral("rigidlab-cli info: expected exactly one scene file (see --help)"));
         return kExitUsage;

@@ -2,6 +2,7 @@
 // 2 bad usage (DESIGN.md §6).
 #include "Cli.h"
 
+#include <QCommandLineParser>
 #include <QCoreApplication>
 
 #include <cstdio>
@@ -11,6 +12,18 @@ namespace rl::cli {
 void printError(const QString& message) {
     std::fputs(qPrintable(message), stderr);
     std::fputc('\n', stderr);
+}
+
+std::optional<int> parseArguments(QCommandLineParser& parser, const QStringList& arguments, const char* command) {
+    if (!parser.parse(arguments)) {
+        printError(QStringLiteral("rigidlab-cli %1: %2").arg(QLatin1String(command), parser.errorText()));
+        return kExitUsage;
+    }
+    if (parser.isSet("help")) {
+        printOut(parser.helpText());
+        return kExitOk;
+    }
+    return std::nullopt;
 }
 
 void printError(const std::string& message) {

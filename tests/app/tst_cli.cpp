@@ -1,32 +1,16 @@
 // Tests of rigidlab-cli as a user runs it: exit codes, messages that name the file, and the info/export output.
+#include "app/CliRunner.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run runCli(const QStringList& args) {
-    QProcess p;
-    p.start(QStringLiteral(RL_CLI_PATH), args);
-    Run r;
-    if (!p.waitForFinished(120000)) {
-        p.kill();
-        return r;
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
-}
+using rl::test::runCli;
+using Run = rl::test::CliRun;
 
 QString scenePath(const char* name) {
     return QStringLiteral(RL_SOURCE_DIR "/resources/scenes/") + name;

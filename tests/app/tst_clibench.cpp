@@ -1,31 +1,14 @@
 // Tests of `rigidlab-cli bench` as a user runs it: the one-line-per-scene output with its fields, and the exit
 // codes for unknown scene names, bad frame counts and bad scene files.
-#include <QProcess>
+#include "app/CliRunner.h"
+
 #include <QTemporaryDir>
 #include <QTest>
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run runCli(const QStringList& args) {
-    QProcess p;
-    p.start(QStringLiteral(RL_CLI_PATH), args);
-    Run r;
-    if (!p.waitForFinished(120000)) {
-        p.kill();
-        p.waitForFinished();
-        return r;
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
-}
+using rl::test::runCli;
+using Run = rl::test::CliRun;
 
 // key=value pairs of one output line.
 QHash<QString, QString> fields(const QString& line) {

@@ -2,6 +2,7 @@
 #include "MainWindow.h"
 #include "document/SceneDocument.h"
 #include "outliner/OutlinerModel.h"
+#include "ui/GuiTestSetup.h"
 #include "viewport/Viewport.h"
 
 #include <QAbstractItemModel>
@@ -17,18 +18,7 @@
 class TestMainWindow : public QObject {
     Q_OBJECT
 public:
-    static void initMain() {
-        QSurfaceFormat format;
-        format.setVersion(3, 3);
-        format.setProfile(QSurfaceFormat::CoreProfile);
-        format.setDepthBufferSize(24);
-        QSurfaceFormat::setDefaultFormat(format);
-        const QString runtime = QDir::tempPath() + "/rigidlab-test-runtime";
-        QDir().mkpath(runtime);
-        QFile::setPermissions(runtime, QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
-        qputenv("XDG_RUNTIME_DIR", runtime.toUtf8());
-        QCoreApplication::setOrganizationName("RigidLabTests");
-    }
+    static void initMain() { rl::test::prepareGuiTest(); }
 
 private slots:
     void opensSceneIntoOutliner_data() {

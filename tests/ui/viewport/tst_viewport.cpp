@@ -1,5 +1,6 @@
 // Tests of the viewport widget on a real GL context (xcb under Xvfb, Mesa llvmpipe): it draws, highlights the
 // selection, picks by click and by box, moves the camera, and renders 5,000 instances (frame time printed).
+#include "ui/GuiTestSetup.h"
 #include "viewport/Viewport.h"
 
 #include <QApplication>
@@ -108,19 +109,7 @@ private:
 };
 
 void TestViewport::initMain() {
-    // Qt wants a private runtime directory; Xvfb sessions often have none.
-    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
-        const QString dir = QDir::tempPath() + QStringLiteral("/rl-xdg-runtime");
-        QDir().mkpath(dir);
-        QFile::setPermissions(dir, QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
-        qputenv("XDG_RUNTIME_DIR", dir.toLocal8Bit());
-    }
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    format.setStencilBufferSize(8);
-    QSurfaceFormat::setDefaultFormat(format);
+    rl::test::prepareGuiTest();
 }
 
 void TestViewport::init() {

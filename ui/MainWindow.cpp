@@ -1,10 +1,14 @@
 #include "MainWindow.h"
 
+#include "analysis/AnalysisController.h"
 #include "document/SceneDocument.h"
-#include "document/commands/RemoveBodiesCommand.h"
-#include "document/commands/SetBodiesCommand.h"
+#include "edit/EditController.h"
+#include "files/FileController.h"
 #include "inspector/InspectorWidget.h"
 #include "outliner/OutlinerModel.h"
+#include "overlays/OverlayController.h"
+#include "settings/SettingsController.h"
+#include "simulation/SimulationController.h"
 #include "viewport/ScenePresenter.h"
 #include "viewport/Viewport.h"
 
@@ -12,6 +16,8 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
@@ -21,6 +27,7 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QSettings>
 #include <QSortFilterProxyModel>
 #include <QStatusBar>
@@ -40,8 +47,24 @@ MainWindow::MainWindow(QWidget* parent)
     m_viewport->setPickFunction([this](const ViewRay& ray) { return m_presenter->pick(ray); });
     setCentralWidget(m_viewport);
 
+    // Qt retries a keypad key without its keypad modifier, so the keypad's Del (numpad "." with Num Lock off) would
+    // trigger Delete; the viewport uses it to frame the selection, as Blender does (see eventFilter).
+    m_viewport->installEventFilter(this);
+    setAcceptDrops(true);
+    createMenus();
     createDocks();
-    createActions();
+    // Controllers add their menus, toolbars and docks; the order only matters for toolbars and dock tabs.
+    m_files = new FileController(this);
+    m_edit = new EditController(this);
+    m_settings = new SettingsController(this);
+    m_overlays = new OverlayController(this);
+    m_simulation = new SimulationController(this);
+    m_analysis = new AnalysisController(this);
+    menu(Menu::Help)->addAction(tr("&About RigidLab"), this, [this] {
+        QMessageBox::about(this, tr("About RigidLab"),
+                           tr("<b>RigidLab</b> %1<br>An editor and simulator for 3D rigid-body scenes.")
+                               .arg(QApplication::applicationVersion()));
+    });
 
     m_selectionLabel = new QLabel(this);
     m_bodyCountLabel = new QLabel(this);
@@ -141,108 +164,35 @@ void MainWindow::createDocks() {
     resizeDocks({inspectorDock}, {380}, Qt::Horizontal); // a saved window state overrides this
 }
 
-void MainWindow::createActions() {
-    QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
-    QAction* openAction = fileMenu->addAction(tr("&Open..."), this, [this] {
-        const QString path = QFileDialog::getOpenFileName(
-            this, tr("Open Scene"), QString(),
-            tr("Scenes (*.rlscene *.obj *.gltf *.glb *.fbx *.ply *.stl *.dae *.3ds);;All files (*)"));
-        if (!path.isEmpty())
-            openFile(path);
-    });
-    openAction->setShortcut(QKeySequence::Open);
-    fileMenu->addSeparator();
-    QAction* quitAction = fileMenu->addAction(tr("&Quit"), this, &QWidget::close);
-    quitAction->setShortcut(QKeySequence::Quit);
-
-    createEditActions();
-
-    QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
-    helpMenu->addAction(tr("&About RigidLab"), this, [this] {
-        QMessageBox::about(this, tr("About RigidLab"),
-                           tr("<b>RigidLab</b> %1<br>An editor and simulator for 3D rigid-body scenes.")
-                               .arg(QApplication::applicationVersion()));
-    });
-}
-
-void MainWindow::createEditActions() {
-    QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
-    QToolBar* toolBar = addToolBar(tr("Edit"));
-    toolBar->setObjectName("EditToolBar");
-    QUndoStack* stack = m_document->undoStack();
-
-    QAction* undoAction = stack->createUndoAction(this, tr("&Undo"));
-    undoAction->setObjectName("UndoAction");
-    undoAction->setShortcut(QKeySequence::Undo);
-    undoAction->setIcon(QIcon::fromTheme("edit-undo"));
-    QAction* redoAction = stack->createRedoAction(this, tr("&Redo"));
-    redoAction->setObjectName("RedoAction");
-    // Ctrl+Shift+Z as in Blender, Ctrl+Y as on Windows.
-    redoAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
-    redoAction->setIcon(QIcon::fromTheme("edit-redo"));
-
-    QAction* deleteAction = new QAction(QIcon::fromTheme("edit-delete"), tr("&Delete"), this);
-    deleteAction->setObjectName("DeleteAction");
-    deleteAction->setShortcut(QKeySequence::Delete);
-    deleteAction->setStatusTip(tr("Delete the selected bodies"));
-    connect(deleteAction, &QAction::triggered, this, &MainWindow::deleteSelection);
-
-    // Alt+A: Shift+A is Blender's "Add" and Ctrl+A "Select all", which the editor may want later.
-    QAction* anchorAction = new QAction(tr("Toggle &Anchor"), this);
-    anchorAction->setObjectName("ToggleAnchorAction");
-    anchorAction->setShortcut(QKeySequence(Qt::ALT | Qt::Key_A));
-    anchorAction->setStatusTip(tr("Make the selected bodies static, or dynamic again when all are static"));
-    connect(anchorAction, &QAction::triggered, this, &MainWindow::toggleAnchor);
-
-    // Qt retries a keypad key without its keypad modifier, so the keypad's Del (numpad "." with Num Lock off) would
-    // delete bodies; the viewport uses it to frame the selection, as Blender does.
-    m_viewport->installEventFilter(this);
-
-    auto updateEnabled = [this, deleteAction, anchorAction] {
-        deleteAction->setEnabled(!m_selection.isEmpty());
-        anchorAction->setEnabled(!m_selection.isEmpty());
+void MainWindow::createMenus() {
+    m_menus.resize(static_cast<int>(Menu::Help) + 1);
+    auto add = [this](Menu which, const QString& title, const char* name) {
+        QMenu* created = menuBar()->addMenu(title);
+        created->setObjectName(QLatin1String(name));
+        m_menus[static_cast<int>(which)] = created;
     };
-    connect(this, &MainWindow::selectionChanged, this, updateEnabled);
-    updateEnabled();
-
-    editMenu->addAction(undoAction);
-    editMenu->addAction(redoAction);
-    editMenu->addSeparator();
-    editMenu->addAction(deleteAction);
-    editMenu->addAction(anchorAction);
-    toolBar->addAction(undoAction);
-    toolBar->addAction(redoAction);
-    toolBar->addSeparator();
-    toolBar->addAction(deleteAction);
-    toolBar->addAction(anchorAction);
+    add(Menu::File, tr("&File"), "FileMenu");
+    add(Menu::Edit, tr("&Edit"), "EditMenu");
+    add(Menu::Add, tr("&Add"), "AddMenu");
+    add(Menu::View, tr("&View"), "ViewMenu");
+    add(Menu::Simulation, tr("&Simulation"), "SimulationMenu");
+    add(Menu::Analysis, tr("A&nalysis"), "AnalysisMenu");
+    add(Menu::Window, tr("&Window"), "WindowMenu");
+    add(Menu::Help, tr("&Help"), "HelpMenu");
+    // File > Export is a submenu the file controller places; others add their exporters to it.
+    auto* exportMenu = new QMenu(tr("&Export"), this);
+    exportMenu->setObjectName("ExportMenu");
+    m_menus[static_cast<int>(Menu::Export)] = exportMenu;
 }
 
-void MainWindow::deleteSelection() {
-    if (m_selection.isEmpty())
-        return;
-    const QList<int> bodies = m_selection;
-    setSelectedBodies({}); // the indices shift once the bodies are gone
-    m_document->undoStack()->push(new RemoveBodiesCommand(m_document, bodies));
-}
-
-void MainWindow::toggleAnchor() {
-    if (m_selection.isEmpty())
-        return;
-    bool allAnchored = true;
-    for (int body : m_selection)
-        allAnchored = allAnchored && m_document->body(body).anchor;
-    std::vector<BodyDef> after;
-    for (int body : m_selection) {
-        after.push_back(m_document->body(body));
-        after.back().anchor = !allAnchored;
-    }
-    m_document->undoStack()->push(
-        new SetBodiesCommand(m_document, m_selection, std::move(after), allAnchored ? tr("Unanchor") : tr("Anchor")));
+QMenu* MainWindow::menu(Menu which) const {
+    return m_menus.value(static_cast<int>(which));
 }
 
 void MainWindow::rebuildViewport() {
     m_presenter->rebuild(m_document->scene());
     m_viewport->setScene(m_presenter->viewportScene());
+    emit viewportRebuilt();
     // Keep only selected bodies that still exist.
     QList<int> kept;
     for (int body : m_selection)
@@ -290,14 +240,9 @@ void MainWindow::syncOutlinerSelection() {
 }
 
 bool MainWindow::openFile(const QString& path) {
-    QString error;
-    if (!m_document->load(path, &error)) {
-        QMessageBox::critical(this, tr("Cannot open scene"), error);
-        return false;
-    }
-    statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), 5000);
-    m_viewport->frameAll();
-    return true;
+    if (QFileInfo(path).suffix().compare(QLatin1String("bake"), Qt::CaseInsensitive) == 0)
+        return m_simulation->openBake(path);
+    return m_files->openScene(path);
 }
 
 void MainWindow::updateTitle() {
@@ -324,7 +269,27 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
     return QMainWindow::eventFilter(watched, event);
 }
 
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    QStringList paths;
+    for (const QUrl& url : event->mimeData()->urls())
+        if (url.isLocalFile())
+            paths.append(url.toLocalFile());
+    if (!paths.isEmpty()) {
+        event->acceptProposedAction();
+        m_files->openDroppedFiles(paths);
+    }
+}
+
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!m_files->maybeSave()) {
+        event->ignore();
+        return;
+    }
     QSettings settings;
     settings.setValue("mainwindow/geometry", saveGeometry());
     settings.setValue("mainwindow/state", saveState());

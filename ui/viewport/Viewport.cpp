@@ -78,6 +78,21 @@ void Viewport::paintGL() {
     m_renderer.render(m_camera, static_cast<int>(std::lround(width() * ratio)),
                       static_cast<int>(std::lround(height() * ratio)), m_options);
 
+    if (m_overlayPainter) {
+        const QSize pixels(static_cast<int>(std::lround(width() * ratio)),
+                           static_cast<int>(std::lround(height() * ratio)));
+        if (m_overlayImage.size() != pixels) {
+            m_overlayImage = QImage(pixels, QImage::Format_RGBA8888_Premultiplied);
+            m_overlayImage.setDevicePixelRatio(ratio);
+        }
+        m_overlayImage.fill(Qt::transparent);
+        {
+            QPainter painter(&m_overlayImage);
+            painter.setRenderHint(QPainter::Antialiasing);
+            m_overlayPainter(painter, m_camera, size());
+        }
+        m_renderer.drawOverlay(m_overlayImage, 0, 0, pixels.width(), pixels.height());
+    }
     if (m_axisGizmo) {
         updateGizmoImage();
         const int margin = static_cast<int>(std::lround(6 * ratio));
@@ -91,6 +106,13 @@ void Viewport::paintGL() {
     m_lastFrameMs = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
     m_averageFrameMs = m_averageFrameMs == 0.0 ? m_lastFrameMs : 0.95 * m_averageFrameMs + 0.05 * m_lastFrameMs;
     emit frameRendered(m_lastFrameMs);
+}
+
+void Viewport::setOverlayPainter(OverlayPainter painter) {
+    m_overlayPainter = std::move(painter);
+    if (!m_overlayPainter)
+        m_overlayImage = QImage();
+    update();
 }
 
 void Viewport::updateGizmoImage() {

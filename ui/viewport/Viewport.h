@@ -15,6 +15,7 @@
 #include <functional>
 #include <span>
 
+class QPainter;
 class QRubberBand;
 
 namespace rl {
@@ -44,6 +45,11 @@ public:
     // frame at 1280x800: 77 ms without MSAA, 193 ms with 4x in both the default format and the viewport, 129 ms with
     // 4x in the default format only (the window's own surface), so the application should ask for 0 samples too.
     void setSamples(int samples);
+
+    // Draws over the 3D frame with QPainter in widget (logical) pixels: the simulation overlays. Called from paintGL
+    // only when set; call update() after the painter's data changed. An empty function removes it.
+    using OverlayPainter = std::function<void(QPainter&, const Camera&, const QSize&)>;
+    void setOverlayPainter(OverlayPainter painter);
 
     // Without a pick function, clicks pick by the instances' world boxes (ViewportScene::pickBounds).
     void setPickFunction(PickFunction pick) { m_pick = std::move(pick); }
@@ -104,6 +110,8 @@ private:
     PickFunction m_pick;
     bool m_axisGizmo = true;
     QImage m_gizmoImage;
+    OverlayPainter m_overlayPainter;
+    QImage m_overlayImage;
     glm::vec3 m_gizmoForward{0.0f}; // camera direction the image was painted for
     QRubberBand* m_rubberBand = nullptr;
 

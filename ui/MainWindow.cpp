@@ -13,6 +13,7 @@
 #include "viewport/Viewport.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -179,10 +180,34 @@ void MainWindow::createMenus() {
     add(Menu::Analysis, tr("A&nalysis"), "AnalysisMenu");
     add(Menu::Window, tr("&Window"), "WindowMenu");
     add(Menu::Help, tr("&Help"), "HelpMenu");
+    createLanguageMenu();
     // File > Export is a submenu the file controller places; others add their exporters to it.
     auto* exportMenu = new QMenu(tr("&Export"), this);
     exportMenu->setObjectName("ExportMenu");
     m_menus[static_cast<int>(Menu::Export)] = exportMenu;
+}
+
+void MainWindow::createLanguageMenu() {
+    // The language is read once at start-up (app/rigidlab/main.cpp): the "ui/language" setting, else the system
+    // locale. Switching asks for a restart rather than re-translating every open widget.
+    QMenu* languageMenu = menu(Menu::View)->addMenu(tr("&Language"));
+    languageMenu->setObjectName("LanguageMenu");
+    auto* group = new QActionGroup(languageMenu);
+    const QString current = QSettings().value("ui/language").toString();
+    const QList<QPair<QString, QString>> languages = {{QString(), tr("System default")},
+                                                      {QStringLiteral("en"), QStringLiteral("English")},
+                                                      {QStringLiteral("de"), QStringLiteral("Deutsch")}};
+    for (const auto& [code, name] : languages) {
+        QAction* action = languageMenu->addAction(name);
+        action->setObjectName(QStringLiteral("LanguageAction_") + (code.isEmpty() ? QStringLiteral("system") : code));
+        action->setCheckable(true);
+        action->setChecked(code == current);
+        group->addAction(action);
+        connect(action, &QAction::triggered, this, [this, code] {
+            QSettings().setValue("ui/language", code);
+            statusBar()->showMessage(tr("The language changes when RigidLab is restarted."), 8000);
+        });
+    }
 }
 
 QMenu* MainWindow::menu(Menu which) const {

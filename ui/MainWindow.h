@@ -71,6 +71,7 @@ protected:
 
 private:
     void createMenus();
+    void createLanguageMenu();
     void createDocks();
     void updateTitle();
     void updateStatus();

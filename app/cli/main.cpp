@@ -51,6 +51,7 @@ const Entry kCommands[] = {
     {"export", rl::cli::runExport, "convert a .bake to CSV or to a .bake in the current format"},
     {"accuracy", rl::cli::runAccuracy, "error against exact solutions versus CPU time, per integrator"},
     {"bench", rl::cli::runBench, "step scenes and print the wall-clock cost per step (median, p95)"},
+    {"diff", rl::cli::runDiff, "compare two .bake files: first diverging frame, largest differences per body"},
 };
 
 void printUsage(FILE* out) {

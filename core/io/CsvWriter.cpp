@@ -88,6 +88,8 @@ Status writeCsv(const Bake& bake, std::ostream& out, const CsvOptions& options) 
             rows += '\n';
         }
         out.write(rows.data(), static_cast<std::streamsize>(rows.size()));
+        if (options.progress && !options.progress(f - options.firstFrame + 1, last - options.firstFrame + 1))
+            return Error{{}, 0, {}, "export cancelled"};
     }
     return Ok{};
 }

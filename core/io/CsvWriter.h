@@ -6,6 +6,7 @@
 #include "common/Result.h"
 
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <ostream>
 #include <string>
@@ -20,6 +21,9 @@ struct CsvOptions {
     std::vector<size_t> bodies; // rows for these body indices, in this order; empty means every body
     size_t firstFrame = 0;      // inclusive range of frames; lastFrame is clamped to the last frame of the bake
     size_t lastFrame = std::numeric_limits<size_t>::max();
+    // Called after each frame's rows with (frames written, frames in the range); returning false cancels the export
+    // with an Error, and writeCsvFile then leaves the target as it was.
+    std::function<bool(size_t, size_t)> progress;
 };
 
 // A field as RFC 4180 wants it: unchanged, or in double quotes with inner quotes doubled when it contains a comma,

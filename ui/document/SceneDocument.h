@@ -24,10 +24,25 @@ public:
     QUndoStack* undoStack() { return &m_undoStack; }
     bool isModified() const { return !m_undoStack.isClean(); }
 
-    // Replaces the whole scene (New, Open). Clears the undo history.
+    // Replaces the whole scene (New, Open). Clears the undo history. Relative OBJ paths of "obj" shapes become
+    // absolute (against the scene's sourcePath), so that a later Save As to another folder still finds the OBJ.
     void reset(Scene scene, const QString& filePath);
     // Loads any scene file the core reads; on failure returns false and sets errorMessage (file, object, problem).
     bool load(const QString& path, QString* errorMessage);
+
+    // Writes the scene as .rlscene to `path` atomically (QSaveFile: the old file stays intact when anything fails),
+    // then makes `path` the document's file and marks the undo stack clean. On failure returns false, sets
+    // errorMessage (file, body, problem) and leaves the document as it was, modified. OBJ paths of "obj" shapes
+    // are written relative to the new file's folder.
+    bool save(const QString& path, QString* errorMessage);
+    // Writes a copy (autosave, recovery) without touching the document's file or clean state. OBJ paths are
+    // written absolute so that the copy opens from any folder.
+    bool writeCopy(const QString& path, QString* errorMessage) const;
+    // Marks the document modified without an undo step (a scene restored from an autosave is unsaved work).
+    void markModified();
+
+    // Makes every relative "obj" shape path absolute against the folder of `baseFile` (a scene file).
+    static void makeObjPathsAbsolute(Scene& scene, const QString& baseFile);
 
     // Model methods: the only way commands change the scene. Each emits the matching signal.
     void setBody(int index, const BodyDef& body);

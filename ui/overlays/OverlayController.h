@@ -62,7 +62,8 @@ public:
     bool isPainterInstalled() const { return m_painterInstalled; }
     // Figures of the painter, measured around the paint function (QElapsedTimer): for the status read-out and tests.
     int paintCount() const { return m_paintCount; }
-    double lastPaintMs() const { return m_lastPaintMs; }
+    double lastPaintMs() const { return m_lastPaintMs; }       // wall time
+    double lastPaintCpuMs() const { return m_lastPaintCpuMs; } // CPU time of the painting thread
     const OverlayPaintStats& lastPaintStats() const { return m_lastStats; }
 
     // The painter itself, public so that tests and tools can paint an overlay into any QPainter.
@@ -99,6 +100,7 @@ private:
 
     int m_paintCount = 0;
     double m_lastPaintMs = 0.0;
+    double m_lastPaintCpuMs = 0.0;
     OverlayPaintStats m_lastStats;
 };
 

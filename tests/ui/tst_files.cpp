@@ -22,6 +22,7 @@
 #include <QPointer>
 #include <QPushButton>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -448,7 +449,12 @@ private slots:
         rl::SceneDocument* document = window.document();
         const rl::Scene original = document->scene();
         const QStringList originalNames = bodyNames(document);
+        // One change signal for the whole import: views rebuild once, not once per body.
+        QSignalSpy inserted(document, &rl::SceneDocument::bodyInserted);
+        QSignalSpy removed(document, &rl::SceneDocument::bodyRemoved);
         QVERIFY(window.files()->importScenes({kScenes + "stack.obj"}));
+        QCOMPARE(inserted.size(), 1);
+        QCOMPARE(inserted[0], (QVariantList{11, 11}));
         QCOMPARE(document->bodyCount(), 22);
         QCOMPARE(document->undoStack()->count(), 1);
         QCOMPARE(document->undoStack()->undoText(), QStringLiteral("Import stack.obj"));
@@ -478,6 +484,8 @@ private slots:
         document->undoStack()->undo();
         QCOMPARE(document->bodyCount(), 22);
         document->undoStack()->undo();
+        QCOMPARE(removed.size(), 2);
+        QCOMPARE(removed[1], (QVariantList{11, 11}));
         QString why;
         QVERIFY2(sameDefinitions(document->scene(), original, &why), qPrintable(why));
         QVERIFY(!document->isModified());

@@ -152,6 +152,20 @@ void SceneDocument::removeBody(int index) {
     emit bodyRemoved(index);
 }
 
+void SceneDocument::insertBodies(int index, const std::vector<BodyDef>& bodies) {
+    if (bodies.empty())
+        return;
+    m_scene.bodies.insert(m_scene.bodies.begin() + index, bodies.begin(), bodies.end());
+    emit bodyInserted(index, static_cast<int>(bodies.size()));
+}
+
+void SceneDocument::removeBodies(int index, int count) {
+    if (count <= 0)
+        return;
+    m_scene.bodies.erase(m_scene.bodies.begin() + index, m_scene.bodies.begin() + index + count);
+    emit bodyRemoved(index, count);
+}
+
 void SceneDocument::setWorldSettings(const WorldSettings& settings) {
     m_scene.world = settings;
     emit worldSettingsChanged();

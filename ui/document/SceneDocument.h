@@ -48,14 +48,19 @@ public:
     void setBody(int index, const BodyDef& body);
     void insertBody(int index, const BodyDef& body);
     void removeBody(int index);
+    // Many bodies in one change and one signal (Import, undoing it): views rebuild once, not once per body, which
+    // took 11 s to import and 57 s to undo the 646-body ramps scene when done body by body.
+    void insertBodies(int index, const std::vector<BodyDef>& bodies);
+    void removeBodies(int index, int count);
     void setWorldSettings(const WorldSettings& settings);
     void setMaterials(const std::vector<MaterialDef>& materials);
 
 signals:
     void sceneReset();
     void bodyChanged(int index);
-    void bodyInserted(int index);
-    void bodyRemoved(int index);
+    // `count` bodies were inserted at / removed from `index` on (1 for insertBody and removeBody).
+    void bodyInserted(int index, int count = 1);
+    void bodyRemoved(int index, int count = 1);
     void worldSettingsChanged();
     void materialsChanged();
     void filePathChanged(const QString& path);

@@ -122,13 +122,11 @@ ImportBodiesCommand::ImportBodiesCommand(SceneDocument* document, ImportPlan pla
 void ImportBodiesCommand::redo() {
     if (m_plan.materials != m_oldMaterials)
         m_document->setMaterials(m_plan.materials);
-    for (size_t i = 0; i < m_plan.bodies.size(); ++i)
-        m_document->insertBody(m_first + static_cast<int>(i), m_plan.bodies[i]);
+    m_document->insertBodies(m_first, m_plan.bodies);
 }
 
 void ImportBodiesCommand::undo() {
-    for (int i = count() - 1; i >= 0; --i)
-        m_document->removeBody(m_first + i);
+    m_document->removeBodies(m_first, count());
     if (m_plan.materials != m_oldMaterials)
         m_document->setMaterials(m_oldMaterials);
 }

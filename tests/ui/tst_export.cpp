@@ -57,6 +57,8 @@ void onModal(const QString& name, std::function<void(QWidget*)> act) {
 // Fills in the Export dialog and presses Export.
 void fillExportDialog(QWidget* dialog, const QString& path, bool selected, int first = -1, int last = -1) {
     dialog->findChild<QLineEdit*>("ExportPath")->setText(path);
+    if (const QString dir = qEnvironmentVariable("RL_SCREENSHOT_DIR"); !dir.isEmpty())
+        dialog->grab().save(dir + "/export_dialog.png");
     if (selected)
         dialog->findChild<QRadioButton*>("ExportSelectedBodies")->setChecked(true);
     if (first >= 0) {
@@ -207,6 +209,36 @@ private slots:
             return true;
         }));
         QCOMPARE(finalDone, finalTotal);
+    }
+
+    void cancelFromTheProgressDialog() {
+        // A large bake (600 bodies x 2,000 frames, 1.2 million CSV rows) takes long enough for the progress dialog
+        // to come up; its Cancel stops the worker and nothing is written.
+        std::vector<BakeBodyInfo> bodies(600);
+        for (size_t b = 0; b < bodies.size(); ++b)
+            bodies[b].name = "Box." + std::to_string(b);
+        auto big = std::make_shared<Bake>(bodies, 60.0);
+        big->reserveFrames(2000);
+        for (size_t f = 0; f < 2000; ++f) {
+            big->addFrame();
+            for (size_t b = 0; b < bodies.size(); ++b)
+                big->setState(f, b, {{0.001f * f, 0.5f + 0.01f * b, 0.0f}, glm::quat(1, 0, 0, 0), {0.06f, 0, 0}, {}});
+        }
+        QTemporaryDir dir;
+        ExportRequest request;
+        request.path = dir.filePath("big.csv");
+        bool sawDialog = false;
+        onModal("ExportProgress", [&sawDialog](QWidget* dialog) {
+            sawDialog = true;
+            if (const QString shots = qEnvironmentVariable("RL_SCREENSHOT_DIR"); !shots.isEmpty())
+                dialog->grab().save(shots + "/export_progress.png");
+            dialog->findChild<QPushButton*>()->click();
+        });
+        QString error = "unset";
+        QVERIFY(!m_window->analysis()->exportBake(big, request, &error));
+        QVERIFY(sawDialog);
+        QVERIFY(error.isEmpty()); // a cancel is not an error to show
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{});
     }
 
     void failedExportReportsThePath() {

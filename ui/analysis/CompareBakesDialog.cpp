@@ -214,6 +214,15 @@ CompareBakesDialog::CompareBakesDialog(std::function<std::shared_ptr<const Bake>
     resize(860, 520);
 }
 
+void CompareBakesDialog::showEvent(QShowEvent* event) {
+    // A bake may have appeared (or gone) since the dialog was last open.
+    const bool haveCurrent = m_currentBake && m_currentBake();
+    m_useCurrent->setEnabled(haveCurrent);
+    if (!haveCurrent && m_useCurrent->isChecked())
+        m_useFileA->setChecked(true);
+    QDialog::showEvent(event);
+}
+
 void CompareBakesDialog::updateSources() {
     m_fileA->setEnabled(!m_useCurrent->isChecked());
 }

@@ -69,6 +69,9 @@ public:
 signals:
     void bodyActivated(int body);
 
+protected:
+    void showEvent(QShowEvent* event) override;
+
 private:
     std::shared_ptr<const Bake> load(const QString& path, QString* error) const;
     void updateSources();

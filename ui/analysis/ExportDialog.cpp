@@ -40,7 +40,9 @@ ExportDialog::ExportDialog(ExportRequest::Format format, size_t frameCount, size
     browse->setObjectName("ExportBrowse");
     pathRow->addWidget(m_path, 1);
     pathRow->addWidget(browse);
-    form->addRow(tr("&File:"), pathRow);
+    auto* fileLabel = new QLabel(tr("&File:"), this);
+    fileLabel->setBuddy(m_path);
+    form->addRow(fileLabel, pathRow);
     layout->addLayout(form);
 
     m_csvGroup = new QGroupBox(tr("CSV rows"), this);

@@ -422,17 +422,22 @@ private slots:
             QCOMPARE(flagsOf(i), original[i].flags);
     }
 
-    // Live trails keep consecutive frames; a jump (back, skipped, or a restart) starts them again.
+    // Live trails keep the frames shown; going back, jumping far ahead or an unknown frame starts them again.
     void trailsFollowConsecutiveFrames_data() {
         QTest::addColumn<QList<int>>("frames");
         QTest::addColumn<int>("length");          // trail length in frames
         QTest::addColumn<QList<int>>("expected"); // the frames the trail holds at the end, oldest first
         QTest::newRow("consecutive") << QList<int>{0, 1, 2, 3, 4} << 120 << QList<int>{0, 1, 2, 3, 4};
         QTest::newRow("capped") << QList<int>{0, 1, 2, 3, 4, 5} << 3 << QList<int>{3, 4, 5};
-        QTest::newRow("jump ahead") << QList<int>{0, 1, 2, 10, 11} << 120 << QList<int>{10, 11};
+        // A slow live display skips states: the trail keeps what was shown, over the same span of frames.
+        QTest::newRow("skipped states") << QList<int>{0, 1, 3, 6, 10} << 120 << QList<int>{0, 1, 3, 6, 10};
+        QTest::newRow("capped with skips") << QList<int>{0, 2, 4, 6, 8} << 5 << QList<int>{4, 6, 8};
+        QTest::newRow("jump far ahead") << QList<int>{0, 1, 2, 2 + OverlayController::kTrailMaxGapFrames + 1, 34} << 120
+                                        << QList<int>{33, 34};
         QTest::newRow("backwards") << QList<int>{5, 6, 7, 3, 4} << 120 << QList<int>{3, 4};
         QTest::newRow("same frame again") << QList<int>{0, 1, 1, 2} << 120 << QList<int>{0, 1, 2};
         QTest::newRow("restart at 0") << QList<int>{0, 1, 2, 0} << 120 << QList<int>{0};
+        QTest::newRow("unknown frames") << QList<int>{-1, -1, -1} << 120 << QList<int>{-1};
     }
     void trailsFollowConsecutiveFrames() {
         QFETCH(QList<int>, frames);

@@ -33,7 +33,8 @@ struct KindInfo {
 
 // Declared once: the action object names (tests look them up) and the QSettings keys.
 const KindInfo kKinds[OverlayController::KindCount] = {
-    {"OverlayContactsAction", "overlays/contacts", QT_TRANSLATE_NOOP("rl::OverlayController", "&Contact Points"),
+    {"OverlayContactsAction", "overlays/contacts",
+     QT_TRANSLATE_NOOP("rl::OverlayController", "&Contact Points and Normals"),
      QT_TRANSLATE_NOOP("rl::OverlayController", "Show contact points and their normals")},
     {"OverlayVelocitiesAction", "overlays/velocities", QT_TRANSLATE_NOOP("rl::OverlayController", "&Velocities"),
      QT_TRANSLATE_NOOP("rl::OverlayController",
@@ -44,7 +45,8 @@ const KindInfo kKinds[OverlayController::KindCount] = {
      QT_TRANSLATE_NOOP("rl::OverlayController", "Show each body's axis-aligned bounding box (AABB)")},
     {"OverlaySleepingAction", "overlays/sleeping", QT_TRANSLATE_NOOP("rl::OverlayController", "&Sleeping Bodies"),
      QT_TRANSLATE_NOOP("rl::OverlayController", "Draw sleeping bodies washed out")},
-    {"OverlayTrailsAction", "overlays/trails", QT_TRANSLATE_NOOP("rl::OverlayController", "Motion &Trails"),
+    {"OverlayTrailsAction", "overlays/trails",
+     QT_TRANSLATE_NOOP("rl::OverlayController", "Motion &Trails of the Selection"),
      QT_TRANSLATE_NOOP("rl::OverlayController", "Trace the path of the selected bodies over the last frames")},
 };
 constexpr const char* kLegendKey = "overlays/legend";
@@ -105,10 +107,8 @@ void OverlayController::setEnabled(Kind kind, bool on) {
     if (m_actions[kind]->isChecked() != on)
         m_actions[kind]->setChecked(on); // re-enters through toggled, which finds nothing to do
     QSettings().setValue(kKinds[kind].settingsKey, on);
-    if (kind == Trails && !on) {
+    if (kind == Trails && !on)
         m_history.clear();
-        m_historyLastFrame = -1;
-    }
     if (kind == Trails && on && m_hasFrame)
         recordTrail();
     if (kind == Sleeping)
@@ -131,7 +131,6 @@ void OverlayController::clear() {
     m_frame = OverlayFrame{};
     m_hasFrame = false;
     m_history.clear();
-    m_historyLastFrame = -1;
     applySleeping();
     updatePainter();
 }
@@ -139,7 +138,6 @@ void OverlayController::clear() {
 void OverlayController::setTrailSource(std::shared_ptr<const Bake> bake) {
     m_trailSource = std::move(bake);
     m_history.clear();
-    m_historyLastFrame = -1;
     if (m_enabled[Trails] && m_hasFrame)
         recordTrail();
     if (m_painterInstalled)
@@ -148,7 +146,7 @@ void OverlayController::setTrailSource(std::shared_ptr<const Bake> bake) {
 
 void OverlayController::setTrailLength(int frames) {
     m_trailLength = std::max(frames, 2);
-    while (static_cast<int>(m_history.size()) > m_trailLength)
+    while (!m_history.empty() && m_history.front().frame <= m_history.back().frame - m_trailLength)
         m_history.pop_front();
     if (m_painterInstalled)
         m_window->viewport()->update();
@@ -157,23 +155,24 @@ void OverlayController::setTrailLength(int frames) {
 void OverlayController::recordTrail() {
     if (m_trailSource || m_frame.centres.empty())
         return;
-    const bool sameBodies = !m_history.empty() && m_history.back().size() == m_frame.centres.size();
-    if (sameBodies && m_frame.frame >= 0 && m_frame.frame == m_historyLastFrame) {
-        m_history.back() = m_frame.centres; // the same frame shown again (a toggle, a redraw)
+    const int frame = m_frame.frame;
+    const bool sameBodies = !m_history.empty() && m_history.back().centres.size() == m_frame.centres.size();
+    if (sameBodies && frame >= 0 && frame == m_history.back().frame) {
+        m_history.back().centres = m_frame.centres; // the same frame shown again (a toggle, a redraw)
         return;
     }
-    if (!sameBodies || m_frame.frame < 0 || m_frame.frame != m_historyLastFrame + 1)
-        m_history.clear(); // a jump (backwards, skipped frames, a new run): the old path does not lead here
-    if (static_cast<int>(m_history.size()) >= m_trailLength) {
-        // Reuse the oldest frame's storage for the newest.
-        std::vector<glm::vec3> recycled = std::move(m_history.front());
+    // A live display skips states when it is slower than the simulation, so a short gap forward keeps the trail;
+    // backwards, far ahead or an unknown frame means a new run or a reset, and the old path does not lead here.
+    if (!sameBodies || frame < 0 || frame < m_history.back().frame ||
+        frame - m_history.back().frame > kTrailMaxGapFrames)
+        m_history.clear();
+    std::vector<glm::vec3> storage;
+    while (!m_history.empty() && m_history.front().frame <= frame - m_trailLength) {
+        storage = std::move(m_history.front().centres); // reuse the oldest frame's storage for the newest
         m_history.pop_front();
-        recycled.assign(m_frame.centres.begin(), m_frame.centres.end());
-        m_history.push_back(std::move(recycled));
-    } else {
-        m_history.push_back(m_frame.centres);
     }
-    m_historyLastFrame = m_frame.frame;
+    storage.assign(m_frame.centres.begin(), m_frame.centres.end());
+    m_history.push_back({frame, std::move(storage)});
 }
 
 std::vector<glm::vec3> OverlayController::trail(int body) const {
@@ -192,9 +191,9 @@ std::vector<glm::vec3> OverlayController::trail(int body) const {
         return points;
     }
     points.reserve(m_history.size());
-    for (const std::vector<glm::vec3>& centres : m_history)
-        if (static_cast<size_t>(body) < centres.size())
-            points.push_back(centres[body]);
+    for (const TrailSample& sample : m_history)
+        if (static_cast<size_t>(body) < sample.centres.size())
+            points.push_back(sample.centres[body]);
     return points;
 }
 

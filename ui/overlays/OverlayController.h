@@ -28,6 +28,7 @@ class OverlayController : public QObject {
     Q_OBJECT
 public:
     enum Kind { Contacts, Velocities, Centres, Aabbs, Sleeping, Trails, KindCount };
+    static constexpr int kTrailMaxGapFrames = 30; // half a second at 60 Hz: a longer straight segment would mislead
 
     explicit OverlayController(MainWindow* window);
     ~OverlayController() override;
@@ -40,8 +41,9 @@ public:
     QMenu* menu() const { return m_menu; }
 
     // The state now on screen. Cheap to call every displayed frame. During a live run (no trail source) the trails
-    // keep the centres of consecutive frames; a frame that does not follow the previous one restarts them (the same
-    // frame again only replaces the newest point).
+    // keep the centres of the frames shown; a frame number that goes backwards, jumps ahead by more than
+    // kTrailMaxGapFrames or is unknown (-1) restarts them, and the same frame again only replaces the newest point.
+    // Small gaps are kept because a live display slower than the simulation skips states.
     void setFrame(OverlayFrame frame);
     // Back to the edit pose: clears the frame and the trails, and gives sleeping bodies their normal look again.
     void clear();
@@ -52,7 +54,7 @@ public:
     // right while scrubbing and jumping. Null goes back to collecting from setFrame.
     void setTrailSource(std::shared_ptr<const Bake> bake);
     std::shared_ptr<const Bake> trailSource() const { return m_trailSource; }
-    // How many frames a trail covers (at 60 Hz the default is two seconds).
+    // How many frames back a trail reaches (at 60 Hz the default is two seconds).
     void setTrailLength(int frames);
     int trailLength() const { return m_trailLength; }
     // The trail of one body as drawn now: world centres, oldest first (empty when trails are off or unknown).
@@ -91,9 +93,12 @@ private:
     // Sleeping look: instances this controller flagged kInstanceSleeping, so that exactly those are restored.
     std::vector<uint8_t> m_markedSleeping;
 
-    // Live trails: the centres of every body for the last m_trailLength consecutive frames, oldest first.
-    std::deque<std::vector<glm::vec3>> m_history;
-    int m_historyLastFrame = -1;
+    // Live trails: the centres of every body in the displayed frames of the last m_trailLength frames, oldest first.
+    struct TrailSample {
+        int frame = -1;
+        std::vector<glm::vec3> centres;
+    };
+    std::deque<TrailSample> m_history;
     std::shared_ptr<const Bake> m_trailSource;
     int m_trailLength = 120;
     std::vector<std::vector<glm::vec3>> m_trailScratch;

@@ -144,8 +144,10 @@ QTableView* makeTableView(QStandardItemModel* model, QWidget* parent) {
     view->setSelectionBehavior(QAbstractItemView::SelectRows);
     view->verticalHeader()->hide();
     view->verticalHeader()->setDefaultSectionSize(view->fontMetrics().lineSpacing() + 6);
-    view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    view->horizontalHeader()->setStretchLastSection(true);
+    // The numbers share the width the splitter leaves; the integrator's name keeps its own.
+    view->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    view->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Interactive); // sized after each fill
+    view->horizontalHeader()->setMinimumSectionSize(56);
     return view;
 }
 
@@ -354,6 +356,7 @@ void AccuracyPanel::showProblem() {
     }
     for (auto& [integrator, points] : data)
         std::sort(points.begin(), points.end(), [](const QPointF& a, const QPointF& b) { return a.x() < b.x(); });
+    m_studyTableView->resizeColumnToContents(0);
     fillLogLogChart(m_studyChart, data, tr("CPU time per run (µs)"), tr("Error"));
     m_studyChart->setTitle(tr("%1: error against CPU time").arg(m_problem->currentText()));
 }
@@ -442,6 +445,7 @@ void AccuracyPanel::showSceneResult(const SceneAccuracyResult& result, const Sce
     }
     for (auto& [integrator, points] : data)
         std::sort(points.begin(), points.end(), [](const QPointF& a, const QPointF& b) { return a.x() < b.x(); });
+    m_sceneTableView->resizeColumnToContents(0);
     fillLogLogChart(m_sceneChart, data, tr("CPU time of the bake (ms)"), tr("Position error, RMS (m)"));
     QString text = tr("%1 frames of %2 dynamic bodies against %3 × %4 substeps (reference: %5 ms CPU).")
                        .arg(result.frames)

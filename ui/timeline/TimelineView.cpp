@@ -476,8 +476,15 @@ bool TimelineView::event(QEvent* event) {
             QToolTip::hideText();
             event->ignore();
         } else {
-            // The tip follows the frame under the pointer: it is valid for one pixel column only.
-            QToolTip::showText(help->globalPos(), text, this, QRect(help->pos().x(), 0, 1, height()));
+            // The tip belongs to the frame under the pointer (and to its row): moving off it brings the next one.
+            const double f = std::round(frameAtX(help->pos().x()));
+            const int x0 = static_cast<int>(std::floor(xForFrame(f - 0.5)));
+            const int x1 = std::max(x0 + 1, static_cast<int>(std::ceil(xForFrame(f + 0.5))));
+            const int row = trackAt(help->pos());
+            const QRect band = row >= 0 ? trackRect(row) : (rulerRect().contains(help->pos()) ? rulerRect() : rect());
+            const QRect area = help->pos().x() < kGutterWidth ? QRect(0, band.top(), kGutterWidth, band.height())
+                                                              : QRect(x0, band.top(), x1 - x0, band.height());
+            QToolTip::showText(help->globalPos(), text, this, area);
         }
         return true;
     }
@@ -845,7 +852,9 @@ void TimelineView::paintCursor(QPainter& p) {
     const double x = std::floor(xf);
     p.save();
     p.setClipRect(QRectF(kGutterWidth + 1, 0, width() - kGutterWidth - 1, height()));
-    p.fillRect(QRectF(x - 0.5, kCursorBoxHeight, 2.0, height() - kCursorBoxHeight), c.accent);
+    // Down through the ruler and the tracks; the empty space below them (the hint) stays clear.
+    const int bottom = std::min(height(), kRulerHeight + trackCount() * trackHeight());
+    p.fillRect(QRectF(x - 0.5, kCursorBoxHeight, 2.0, bottom - kCursorBoxHeight), c.accent);
 
     // A dot where the cursor crosses each track's main curve.
     const std::shared_ptr<const Bake> bake = m_timeline->bake();

@@ -558,6 +558,8 @@ void FileController::showError(const QString& text, const QString& details) {
     box.setObjectName("FileErrorBox");
     box.setInformativeText(details);
     box.setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // Paths and core messages are long: a wider box than QMessageBox picks keeps them on a line or two.
+    box.setStyleSheet(QStringLiteral("QLabel#qt_msgbox_label, QLabel#qt_msgbox_informativelabel { min-width: 32em; }"));
     box.exec();
 }
 

@@ -141,8 +141,8 @@ bool AnalysisController::exportCurrentBake(ExportRequest::Format format) {
                              ? QDir::home().filePath(tr("untitled"))
                              : QFileInfo(docPath).path() + QLatin1Char('/') + QFileInfo(docPath).completeBaseName();
     const QString suggested = base + (format == ExportRequest::Format::Bake ? ".bake" : ".csv");
-    ExportDialog dialog(format, bake->frameCount(), bake->bodyCount(), bake->fps(), m_window->selectedBodies(),
-                        suggested, m_window);
+    ExportDialog dialog(format, bake->frameCount(), bake->bodyCount(), bake->fps(), bake->hasVelocities(),
+                        m_window->selectedBodies(), suggested, m_window);
     if (dialog.exec() != QDialog::Accepted)
         return false;
     QString error;

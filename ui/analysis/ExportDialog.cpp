@@ -19,8 +19,10 @@
 namespace rl {
 
 ExportDialog::ExportDialog(ExportRequest::Format format, size_t frameCount, size_t bodyCount, double fps,
-                           const QList<int>& selection, const QString& suggestedPath, QWidget* parent)
-    : QDialog(parent), m_frameCount(frameCount), m_bodyCount(bodyCount), m_fps(fps), m_selection(selection) {
+                           bool hasVelocities, const QList<int>& selection, const QString& suggestedPath,
+                           QWidget* parent)
+    : QDialog(parent), m_frameCount(frameCount), m_bodyCount(bodyCount), m_fps(fps), m_hasVelocities(hasVelocities),
+      m_selection(selection) {
     setObjectName("ExportDialog");
     setWindowTitle(tr("Export Bake"));
     auto* layout = new QVBoxLayout(this);
@@ -148,12 +150,16 @@ void ExportDialog::updateState() {
         const size_t bodies = r.bodies.empty() ? m_bodyCount : r.bodies.size();
         const size_t last = std::min(r.lastFrame, m_frameCount > 0 ? m_frameCount - 1 : 0);
         const size_t frames = last >= r.firstFrame ? last - r.firstFrame + 1 : 0;
-        m_summary->setText(tr("%1 rows: %2 frames (%3 s to %4 s) × %5 bodies, centres of mass and velocities.")
-                               .arg(static_cast<qulonglong>(frames * bodies))
-                               .arg(static_cast<qulonglong>(frames))
-                               .arg(static_cast<double>(r.firstFrame) / m_fps, 0, 'f', 3)
-                               .arg(static_cast<double>(last) / m_fps, 0, 'f', 3)
-                               .arg(static_cast<qulonglong>(bodies)));
+        const QString rows = tr("%1 rows: %2 frames (%3 s to %4 s) × %5 bodies.")
+                                 .arg(static_cast<qulonglong>(frames * bodies))
+                                 .arg(static_cast<qulonglong>(frames))
+                                 .arg(static_cast<double>(r.firstFrame) / m_fps, 0, 'f', 3)
+                                 .arg(static_cast<double>(last) / m_fps, 0, 'f', 3)
+                                 .arg(static_cast<qulonglong>(bodies));
+        m_summary->setText(rows + QLatin1Char(' ') +
+                           (m_hasVelocities ? tr("Centres of mass, rotations and velocities.")
+                                            : tr("Centres of mass and rotations; this bake was read from a .bake "
+                                                 "file, which holds no velocities, so those fields stay empty.")));
     } else {
         m_summary->setText(tr("Every body and frame (%1 × %2), with the scene as OBJ text, readable by the original "
                               "project's reader.")

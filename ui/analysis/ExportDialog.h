@@ -19,7 +19,8 @@ class ExportDialog : public QDialog {
     Q_OBJECT
 public:
     // frameCount and bodyCount describe the bake; selection holds the editor's selected bodies.
-    ExportDialog(ExportRequest::Format format, size_t frameCount, size_t bodyCount, double fps,
+    // hasVelocities: false for a bake read from a .bake file (its CSV leaves the velocity fields empty).
+    ExportDialog(ExportRequest::Format format, size_t frameCount, size_t bodyCount, double fps, bool hasVelocities,
                  const QList<int>& selection, const QString& suggestedPath, QWidget* parent = nullptr);
 
     ExportRequest request() const;
@@ -33,6 +34,7 @@ private:
     size_t m_frameCount;
     size_t m_bodyCount;
     double m_fps;
+    bool m_hasVelocities;
     QList<int> m_selection;
     QComboBox* m_format = nullptr;
     QLineEdit* m_path = nullptr;

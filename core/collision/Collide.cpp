@@ -267,6 +267,8 @@ bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, cons
     SatOptions so;
     so.earlyOut = spec;
     so.faceBias = options.faceBias;
+    so.faceRelative = options.faceRelative;
+    so.edgeRelative = options.edgeRelative;
     const SatResult sat = satPolyhedra(a, xfA, b, xfB, so);
     if (sat.separation > spec)
         return false;

@@ -253,15 +253,26 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
         queryFacesA(false, faceA);
     }
     SatResult best = faceA;
-    if (faceB.separation > best.separation + options.faceBias)
+    // Relative tolerances shrink the incumbent's separation towards zero, so a challenger must be clearly better;
+    // edges are weighed against the better of the two faces (Gregorius, GDC 2015). The absolute part is capped at a
+    // hundredth of the smaller shape, so millimetre shapes still get their exact features. Flat polygons keep the
+    // plain 0.1 mm preference: their side rule and rim axes decide the side, and a wider margin there picked rim
+    // features whose witnesses do not lie along the normal (tst_narrowphaserobustness).
+    const bool flat = A.flat || B.flat;
+    const Real faceRelative = flat ? 1.0 : options.faceRelative;
+    const Real edgeRelative = flat ? 1.0 : options.edgeRelative;
+    const Real bias = flat ? std::min(options.faceBias, Real(1e-4))
+                           : std::min(options.faceBias, Real(0.01) * std::min(a.minExtent(), b.minExtent()));
+    if (faceB.separation > faceRelative * best.separation + bias)
         best = faceB;
-    if (edges.separation > best.separation + options.faceBias) {
+    const Real bestFace = std::max(faceA.separation, faceB.separation);
+    if (edges.separation > edgeRelative * bestFace + bias && edges.separation > best.separation) {
         best = edges;
         const PolyEdge& ea = A.edges[best.edgeA];
         const PolyEdge& eb = B.edges[best.edgeB];
         closestPointsSegments(A.vertices[ea.v0], A.vertices[ea.v1], bv[eb.v0], bv[eb.v1], best.pointA, best.pointB);
     }
-    if (rim.separation > best.separation + options.faceBias)
+    if (rim.separation > edgeRelative * std::max(bestFace, edges.separation) + bias && rim.separation > best.separation)
         best = rim;
     return finish(best);
 }

@@ -18,6 +18,12 @@ struct SatOptions {
     // faces keeps the manifold from flickering between one edge point and a face patch on near ties. 0 gives the
     // exact maximum, which the depth tests use.
     Real faceBias = 0.0;
+    // ... plus these fractions of the incumbent's separation (Gregorius, GDC 2015: 0.98 for B's faces against A's,
+    // 0.9 for edges against faces). In deep or shallow contact alike, a near tie then keeps the face: nearly parallel
+    // faces of a stack otherwise flip between A's face, B's face and an edge pair frame to frame, each with new
+    // feature ids, so warm starting is lost and the pile never comes to rest. 1 gives the plain absolute bias.
+    Real faceRelative = 1.0;
+    Real edgeRelative = 1.0;
 };
 
 struct SatResult {

@@ -259,7 +259,9 @@ private slots:
         std::uniform_real_distribution<Real> u(-1.0, 1.0);
         CollideOptions options;
         options.method = method;
-        options.faceBias = 0.0;
+        options.faceBias = 0.0; // the exact deepest axis: no preference for faces
+        options.faceRelative = 1.0;
+        options.edgeRelative = 1.0;
         int touching = 0;
         Real worst = 0.0;
         for (int i = 0; i < 2000; ++i) {

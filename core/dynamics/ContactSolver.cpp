@@ -16,22 +16,22 @@ void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2) {
 
 namespace {
 
-Real effectiveMass(const SolverBody& a, const SolverBody& b, const Vec3& rA, const Vec3& rB, const Vec3& dir) {
-    const Vec3 rnA = glm::cross(rA, dir);
-    const Vec3 rnB = glm::cross(rB, dir);
-    const Real k = a.invMass + b.invMass + glm::dot(rnA, a.invInertia * rnA) + glm::dot(rnB, b.invInertia * rnB);
-    return k > 0.0 ? 1.0 / k : 0.0;
-}
-
-void applyImpulse(SolverBody& a, SolverBody& b, const Vec3& rA, const Vec3& rB, const Vec3& impulse) {
-    a.v -= a.invMass * impulse;
-    a.w -= a.invInertia * glm::cross(rA, impulse);
-    b.v += b.invMass * impulse;
-    b.w += b.invInertia * glm::cross(rB, impulse);
-}
-
 Vec3 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec3& rA, const Vec3& rB) {
     return (b.v + glm::cross(b.w, rB)) - (a.v + glm::cross(a.w, rA));
+}
+
+// Relative velocity of the anchors along row d of point p: dot(d, vB - vA) + wB . (rB x d) - wA . (rA x d).
+inline Real rowVelocity(const SolverBody& a, const SolverBody& b, const ContactConstraint::Point& p, int row,
+                        const Vec3& d) {
+    return glm::dot(d, b.v - a.v) + glm::dot(b.w, p.angularB[row]) - glm::dot(a.w, p.angularA[row]);
+}
+
+// Applies the impulse j along row d of point p (to B, and its opposite to A).
+inline void applyRow(SolverBody& a, SolverBody& b, const ContactConstraint::Point& p, int row, const Vec3& d, Real j) {
+    a.v -= (a.invMass * j) * d;
+    a.w -= j * p.inertiaA[row];
+    b.v += (b.invMass * j) * d;
+    b.w += j * p.inertiaB[row];
 }
 
 } // namespace
@@ -73,9 +73,20 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
             p.rA = mp.position - centers[c.bodyA];
             p.rB = mp.position - centers[c.bodyB];
             p.baseSeparation = mp.separation - glm::dot(p.rB - p.rA, c.normal);
-            p.normalMass = effectiveMass(a, b, p.rA, p.rB, c.normal);
-            p.tangentMass[0] = effectiveMass(a, b, p.rA, p.rB, c.tangent[0]);
-            p.tangentMass[1] = effectiveMass(a, b, p.rA, p.rB, c.tangent[1]);
+            const Vec3* directions[3] = {&c.normal, &c.tangent[0], &c.tangent[1]};
+            Real masses[3];
+            for (int row = 0; row < 3; ++row) {
+                p.angularA[row] = glm::cross(p.rA, *directions[row]);
+                p.angularB[row] = glm::cross(p.rB, *directions[row]);
+                p.inertiaA[row] = a.invInertia * p.angularA[row];
+                p.inertiaB[row] = b.invInertia * p.angularB[row];
+                const Real k = a.invMass + b.invMass + glm::dot(p.angularA[row], p.inertiaA[row]) +
+                               glm::dot(p.angularB[row], p.inertiaB[row]);
+                masses[row] = k > 0.0 ? 1.0 / k : 0.0;
+            }
+            p.normalMass = masses[0];
+            p.tangentMass[0] = masses[1];
+            p.tangentMass[1] = masses[2];
             p.normalImpulse = settings.warmStarting ? mp.normalImpulse : 0.0;
 
             p.tangentImpulse[0] = settings.warmStarting ? mp.tangentImpulse[0] : 0.0;
@@ -94,9 +105,9 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies) {
         SolverBody& b = bodies[c.bodyB];
         for (int k = 0; k < c.pointCount; ++k) {
             const ContactConstraint::Point& p = c.points[k];
-            const Vec3 impulse =
-                p.normalImpulse * c.normal + p.tangentImpulse[0] * c.tangent[0] + p.tangentImpulse[1] * c.tangent[1];
-            applyImpulse(a, b, p.rA, p.rB, impulse);
+            applyRow(a, b, p, 0, c.normal, p.normalImpulse);
+            applyRow(a, b, p, 1, c.tangent[0], p.tangentImpulse[0]);
+            applyRow(a, b, p, 2, c.tangent[1], p.tangentImpulse[1]);
         }
     }
 }
@@ -122,7 +133,7 @@ void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
                 massScale = m_soft.massScale;
                 impulseScale = m_soft.impulseScale;
             }
-            const Real vn = glm::dot(c.normal, relativeVelocity(a, b, p.rA, p.rB));
+            const Real vn = rowVelocity(a, b, p, 0, c.normal);
             Real impulse = -p.normalMass * massScale * (vn + velocityBias) - impulseScale * p.normalImpulse;
             const Real newImpulse = std::max(p.normalImpulse + impulse, 0.0);
             impulse = newImpulse - p.normalImpulse;
@@ -132,7 +143,7 @@ void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
             if (impulse > 0.0 && p.maxNormalImpulse == 0.0)
                 p.relativeVelocity = std::min(p.relativeVelocity, vn);
             p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
-            applyImpulse(a, b, p.rA, p.rB, impulse * c.normal);
+            applyRow(a, b, p, 0, c.normal, impulse);
         }
         m_counters.normalRows += static_cast<uint64_t>(c.pointCount);
 
@@ -142,12 +153,12 @@ void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
             ContactConstraint::Point& p = c.points[k];
             const Real maxFriction = c.friction * p.normalImpulse;
             for (int t = 0; t < 2; ++t) {
-                const Real vt = glm::dot(c.tangent[t], relativeVelocity(a, b, p.rA, p.rB));
+                const Real vt = rowVelocity(a, b, p, 1 + t, c.tangent[t]);
                 Real impulse = -p.tangentMass[t] * vt;
                 const Real newImpulse = std::clamp(p.tangentImpulse[t] + impulse, -maxFriction, maxFriction);
                 impulse = newImpulse - p.tangentImpulse[t];
                 p.tangentImpulse[t] = newImpulse;
-                applyImpulse(a, b, p.rA, p.rB, impulse * c.tangent[t]);
+                applyRow(a, b, p, 1 + t, c.tangent[t], impulse);
             }
         }
         m_counters.frictionRows += 2u * static_cast<uint64_t>(c.pointCount);
@@ -157,23 +168,30 @@ void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
 void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
     if (!m_settings.restitution)
         return;
+    const Real h = m_inverseH > 0.0 ? 1.0 / m_inverseH : 0.0;
     for (ContactConstraint& c : m_constraints) {
         if (c.restitution == 0.0)
             continue;
         SolverBody& a = bodies[c.bodyA];
         SolverBody& b = bodies[c.bodyB];
+        // Relative acceleration along the normal: gravity acts on the bodies that can move (not on anchors and
+        // sleepers, which are entries with no inverse mass).
+        const Vec3 gA = a.invMass > 0.0 ? m_settings.gravity : Vec3(0.0);
+        const Vec3 gB = b.invMass > 0.0 ? m_settings.gravity : Vec3(0.0);
+        const Real accelerationN = glm::dot(c.normal, gB - gA);
         for (int k = 0; k < c.pointCount; ++k) {
             ContactConstraint::Point& p = c.points[k];
             // Only points that approached fast and actually pushed back bounce.
             if (p.relativeVelocity > -m_settings.restitutionThreshold || p.maxNormalImpulse == 0.0)
                 continue;
-            const Real vn = glm::dot(c.normal, relativeVelocity(a, b, p.rA, p.rB));
-            Real impulse = -p.normalMass * (vn + c.restitution * p.relativeVelocity);
+            const Real vn = rowVelocity(a, b, p, 0, c.normal);
+            const Real target = -c.restitution * p.relativeVelocity - (1.0 + c.restitution) * 0.5 * h * accelerationN;
+            Real impulse = -p.normalMass * (vn - target);
             const Real newImpulse = std::max(p.normalImpulse + impulse, 0.0);
             impulse = newImpulse - p.normalImpulse;
             p.normalImpulse = newImpulse;
             p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
-            applyImpulse(a, b, p.rA, p.rB, impulse * c.normal);
+            applyRow(a, b, p, 0, c.normal, impulse);
             ++m_counters.restitutionRows;
         }
     }

@@ -51,6 +51,50 @@ void angularVelocityPhase(BodyState& state, uint32_t i, Real dt, Real c, Integra
     state.smoothAngularVelocity[i] = w;
 }
 
+// One body's velocity phase; the callers check that the step is valid and that the body moves.
+void velocityPhase(BodyState& state, uint32_t i, Real dt, const Vec3& gravity, const Damping& damping,
+                   Integrator integrator, bool rotationEnabled) {
+    const auto gravityField = [&gravity](const Vec3&) { return gravity; };
+    const Real c = damping.linear + state.linearDamping[i];
+    translationVelocityPhase(integrator, state.position[i], state.linearVelocity[i], dt, c, gravityField,
+                             state.smoothDisplacement[i], state.smoothLinearVelocity[i]);
+    if (rotationEnabled)
+        angularVelocityPhase(state, i, dt, damping.angular + state.angularDamping[i], integrator);
+    // The clamp runs after the smooth update so that gravity cannot push a body past it; whatever it removes the
+    // position phase treats like a solver change.
+    Vec3 angular = rotationEnabled ? state.angularVelocity[i] : Vec3(0.0);
+    clampSpeeds(state.linearVelocity[i], angular, dt, state.limits, state.clampCounters);
+    if (rotationEnabled)
+        state.angularVelocity[i] = angular;
+}
+
+void positionPhase(BodyState& state, uint32_t i, Real dt, const Vec3& gravity, const Damping& damping,
+                   Integrator integrator, bool rotationEnabled) {
+    const auto gravityField = [&gravity](const Vec3&) { return gravity; };
+    const Real c = damping.linear + state.linearDamping[i];
+    translationPositionPhase(integrator, state.position[i], state.linearVelocity[i], dt, c, gravityField,
+                             state.smoothDisplacement[i], state.smoothLinearVelocity[i]);
+    if (!rotationEnabled)
+        return;
+    Quat& q = state.orientation[i];
+    Vec3& w = state.angularVelocity[i];
+    const Quat before = q;
+    if (w == state.smoothAngularVelocity[i])
+        q = glm::normalize(state.smoothRotation[i] * q);
+    else
+        q = glm::normalize(rotationFromVector(w * dt) * q); // changed by the solver or the clamp: turn with it
+    if (integrator == Integrator::ExplicitEuler) {
+        // Explicit Euler's state is (q, w in the body frame): the new w keeps its body-frame components while the
+        // body turns by the old w. (For the other schemes q turns about w itself, which leaves w as it is.)
+        w = q * (glm::conjugate(before) * w);
+    }
+    if (integrator == Integrator::Verlet) {
+        const Real ca = damping.angular + state.angularDamping[i];
+        const Vec3 wb = glm::conjugate(q) * w;
+        w = q * (gyroscopicImplicit(wb, inertiaOf(state, i), 0.5 * dt) * detail::implicitDecay(ca, 0.5 * dt));
+    }
+}
+
 } // namespace
 
 void integrateVelocities(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,
@@ -58,22 +102,18 @@ void integrateVelocities(BodyState& state, BodyRange range, Real dt, const Vec3&
     if (!(dt > 0.0) || !std::isfinite(dt))
         return; // a step of no time (or a broken one) moves nothing
     const uint32_t end = std::min(range.end, state.size());
-    const auto gravityField = [&gravity](const Vec3&) { return gravity; };
-    for (uint32_t i = range.begin; i < end; ++i) {
-        if (!state.isMoving(i))
-            continue;
-        const Real c = damping.linear + state.linearDamping[i];
-        translationVelocityPhase(integrator, state.position[i], state.linearVelocity[i], dt, c, gravityField,
-                                 state.smoothDisplacement[i], state.smoothLinearVelocity[i]);
-        if (rotationEnabled)
-            angularVelocityPhase(state, i, dt, damping.angular + state.angularDamping[i], integrator);
-        // The clamp runs after the smooth update so that gravity cannot push a body past it; whatever it removes the
-        // position phase treats like a solver change.
-        Vec3 angular = rotationEnabled ? state.angularVelocity[i] : Vec3(0.0);
-        clampSpeeds(state.linearVelocity[i], angular, dt, state.limits, state.clampCounters);
-        if (rotationEnabled)
-            state.angularVelocity[i] = angular;
-    }
+    for (uint32_t i = range.begin; i < end; ++i)
+        if (state.isMoving(i))
+            velocityPhase(state, i, dt, gravity, damping, integrator, rotationEnabled);
+}
+
+void integrateVelocities(BodyState& state, std::span<const uint32_t> bodies, Real dt, const Vec3& gravity,
+                         const Damping& damping, Integrator integrator, bool rotationEnabled) {
+    if (!(dt > 0.0) || !std::isfinite(dt))
+        return;
+    for (uint32_t i : bodies)
+        if (i < state.size() && state.isMoving(i))
+            velocityPhase(state, i, dt, gravity, damping, integrator, rotationEnabled);
 }
 
 void integratePositions(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,
@@ -81,33 +121,18 @@ void integratePositions(BodyState& state, BodyRange range, Real dt, const Vec3& 
     if (!(dt > 0.0) || !std::isfinite(dt))
         return;
     const uint32_t end = std::min(range.end, state.size());
-    const auto gravityField = [&gravity](const Vec3&) { return gravity; };
-    for (uint32_t i = range.begin; i < end; ++i) {
-        if (!state.isMoving(i))
-            continue;
-        const Real c = damping.linear + state.linearDamping[i];
-        translationPositionPhase(integrator, state.position[i], state.linearVelocity[i], dt, c, gravityField,
-                                 state.smoothDisplacement[i], state.smoothLinearVelocity[i]);
-        if (!rotationEnabled)
-            continue;
-        Quat& q = state.orientation[i];
-        Vec3& w = state.angularVelocity[i];
-        const Quat before = q;
-        if (w == state.smoothAngularVelocity[i])
-            q = glm::normalize(state.smoothRotation[i] * q);
-        else
-            q = glm::normalize(rotationFromVector(w * dt) * q); // changed by the solver or the clamp: turn with it
-        if (integrator == Integrator::ExplicitEuler) {
-            // Explicit Euler's state is (q, w in the body frame): the new w keeps its body-frame components while the
-            // body turns by the old w. (For the other schemes q turns about w itself, which leaves w as it is.)
-            w = q * (glm::conjugate(before) * w);
-        }
-        if (integrator == Integrator::Verlet) {
-            const Real ca = damping.angular + state.angularDamping[i];
-            const Vec3 wb = glm::conjugate(q) * w;
-            w = q * (gyroscopicImplicit(wb, inertiaOf(state, i), 0.5 * dt) * detail::implicitDecay(ca, 0.5 * dt));
-        }
-    }
+    for (uint32_t i = range.begin; i < end; ++i)
+        if (state.isMoving(i))
+            positionPhase(state, i, dt, gravity, damping, integrator, rotationEnabled);
+}
+
+void integratePositions(BodyState& state, std::span<const uint32_t> bodies, Real dt, const Vec3& gravity,
+                        const Damping& damping, Integrator integrator, bool rotationEnabled) {
+    if (!(dt > 0.0) || !std::isfinite(dt))
+        return;
+    for (uint32_t i : bodies)
+        if (i < state.size() && state.isMoving(i))
+            positionPhase(state, i, dt, gravity, damping, integrator, rotationEnabled);
 }
 
 void integrateSmooth(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace rl {
 
@@ -78,6 +79,13 @@ void integrateVelocities(BodyState& state, BodyRange range, Real dt, const Vec3&
 // Advances positions and orientations; for verlet also applies the closing half kick.
 void integratePositions(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,
                         Integrator integrator, bool rotationEnabled);
+
+// The same two phases for a list of body indices (the world's islands solved with their own substep count). Indices
+// that are out of range, asleep or static are skipped.
+void integrateVelocities(BodyState& state, std::span<const uint32_t> bodies, Real dt, const Vec3& gravity,
+                         const Damping& damping, Integrator integrator, bool rotationEnabled);
+void integratePositions(BodyState& state, std::span<const uint32_t> bodies, Real dt, const Vec3& gravity,
+                        const Damping& damping, Integrator integrator, bool rotationEnabled);
 
 // Both phases with no solver in between: the free motion over one substep.
 void integrateSmooth(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,

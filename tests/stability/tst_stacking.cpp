@@ -60,9 +60,10 @@ private slots:
         QVERIFY(stats.allFinite);
         QVERIFY(heavy.y - light.y > 0.45);        // still on top
         QVERIFY(horizontal(heavy, light) < 0.05); // not slid off
-        // The issue asks for < 1 cm; soft contacts settle F / (m_eff omega^2) deep, and with a 1 kg body under
-        // 1000 kg that is 1.8 cm at the default stiffness (measured). Guard what we have until the solver does better.
-        QVERIFY(resting < 0.02);
+        // Issue 4: penetration < 1 cm. Soft contacts settle F / (m_eff omega^2) deep: 1.8 cm at 8 substeps (measured);
+        // the world gives islands with a mass ratio above 250 more substeps (2x here), which measured 0.44 cm.
+        QVERIFY(resting < 0.01);
+        QVERIFY(stats.maxPenetration < 0.01);
     }
 
     void slabOnTwoCubes() {

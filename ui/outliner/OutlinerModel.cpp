@@ -1,6 +1,8 @@
 #include "outliner/OutlinerModel.h"
 
 #include "document/SceneDocument.h"
+#include "document/UndoIds.h"
+#include "document/commands/SetBodyCommand.h"
 
 #include <QPainter>
 #include <QPixmap>
@@ -35,11 +37,27 @@ QIcon makeIcon(const QColor& fill, bool anchor) {
     return QIcon(pixmap);
 }
 
+// The anchor column's toggle: a pin, solid when the body is anchored, a faint outline when it is not.
+QIcon makePinIcon(bool on) {
+    QPixmap pixmap(16, 16);
+    pixmap.fill(Qt::transparent);
+    QPainter p(&pixmap);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QColor colour = on ? QColor(225, 225, 225) : QColor(150, 150, 150, 90);
+    p.setPen(QPen(colour, 1.4, Qt::SolidLine, Qt::RoundCap));
+    p.setBrush(on ? colour : Qt::transparent);
+    p.drawEllipse(QPointF(8, 5), 3.2, 3.2);
+    p.drawLine(QPointF(8, 8.5), QPointF(8, 14.5));
+    p.drawLine(QPointF(4.5, 10), QPointF(11.5, 10));
+    return QIcon(pixmap);
+}
+
 } // namespace
 
 OutlinerModel::OutlinerModel(SceneDocument* document, QObject* parent)
     : QAbstractItemModel(parent), m_document(document), m_anchorIcon(makeIcon(QColor(150, 150, 150), true)),
-      m_dynamicIcon(makeIcon(QColor(232, 140, 60), false)) {
+      m_dynamicIcon(makeIcon(QColor(232, 140, 60), false)), m_pinIcon(makePinIcon(true)),
+      m_pinOffIcon(makePinIcon(false)) {
     connect(document, &SceneDocument::sceneReset, this, [this] {
         beginResetModel();
         endResetModel();
@@ -93,6 +111,14 @@ QVariant OutlinerModel::data(const QModelIndex& index, int role) const {
             return body.anchor ? tr("%1 (anchor: static)").arg(QString::fromStdString(body.name))
                                : tr("%1 (dynamic)").arg(QString::fromStdString(body.name));
         break;
+    case AnchorColumn:
+        if (role == Qt::DecorationRole)
+            return body.anchor ? m_pinIcon : m_pinOffIcon;
+        if (role == Qt::ToolTipRole)
+            return body.anchor ? tr("Anchored (static): click to make it dynamic") : tr("Dynamic: click to anchor it");
+        if (role == Qt::AccessibleTextRole)
+            return body.anchor ? tr("anchored") : tr("dynamic");
+        break;
     case MaterialColumn:
         if (role == Qt::DisplayRole)
             return QString::fromStdString(body.material);
@@ -104,7 +130,16 @@ QVariant OutlinerModel::data(const QModelIndex& index, int role) const {
 }
 
 QVariant OutlinerModel::headerData(int section, Qt::Orientation orientation, int role) const {
-    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+    if (orientation != Qt::Horizontal)
+        return {};
+    if (section == AnchorColumn) {
+        if (role == Qt::DecorationRole)
+            return m_pinIcon;
+        if (role == Qt::ToolTipRole)
+            return tr("Anchor: click a row's pin to make that body static or dynamic");
+        return {};
+    }
+    if (role != Qt::DisplayRole)
         return {};
     return section == NameColumn ? tr("Name") : tr("Material");
 }
@@ -112,7 +147,53 @@ QVariant OutlinerModel::headerData(int section, Qt::Orientation orientation, int
 Qt::ItemFlags OutlinerModel::flags(const QModelIndex& index) const {
     if (!index.isValid())
         return Qt::NoItemFlags;
-    return Qt::ItemIsSelectable | Qt::ItemIsEnabled;
+    Qt::ItemFlags f = Qt::ItemIsSelectable | Qt::ItemIsEnabled;
+    if (index.column() == NameColumn)
+        f |= Qt::ItemIsEditable;
+    return f;
+}
+
+QString OutlinerModel::renameProblem(int row, const QString& name) const {
+    const QString trimmed = name.trimmed();
+    if (trimmed.isEmpty())
+        return tr("A body needs a name.");
+    const std::string wanted = trimmed.toStdString();
+    for (int i = 0; i < m_document->bodyCount(); ++i)
+        if (i != row && m_document->body(i).name == wanted)
+            return tr("Another body is already called \"%1\". Names must be unique.").arg(trimmed);
+    return {};
+}
+
+bool OutlinerModel::setData(const QModelIndex& index, const QVariant& value, int role) {
+    if (!index.isValid() || index.column() != NameColumn || role != Qt::EditRole ||
+        index.row() >= m_document->bodyCount())
+        return false;
+    const QString name = value.toString().trimmed();
+    if (name.toStdString() == m_document->body(index.row()).name)
+        return true; // unchanged: nothing to undo
+    const QString problem = renameProblem(index.row(), name);
+    if (!problem.isEmpty()) {
+        emit renameRefused(problem);
+        return false;
+    }
+    // A rename from the outliner is a step of its own (NoMergeId), unlike the inspector's typing. It is pushed on
+    // the next turn of the event loop: an editor open while the window is destroyed commits on its way out, and
+    // the queued push then dies with this model instead of reaching a half-destroyed window.
+    const int row = index.row();
+    const std::string oldName = m_document->body(row).name;
+    QMetaObject::invokeMethod(
+        this,
+        [this, row, oldName, name] {
+            if (row >= m_document->bodyCount() || m_document->body(row).name != oldName ||
+                !renameProblem(row, name).isEmpty())
+                return; // the scene changed meanwhile
+            BodyDef renamed = m_document->body(row);
+            renamed.name = name.toStdString();
+            m_document->undoStack()->push(new SetBodyCommand(
+                m_document, row, renamed, tr("Rename %1 to %2").arg(QString::fromStdString(oldName), name), NoMergeId));
+        },
+        Qt::QueuedConnection);
+    return true;
 }
 
 } // namespace rl

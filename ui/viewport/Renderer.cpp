@@ -90,8 +90,8 @@ bool Renderer::initialize() {
     glGenBuffers(1, &m_selectionBuffer);
     m_instanceBufferCapacity = 0;
     m_selectionBufferCapacity = 0;
-    glGenTextures(1, &m_overlayTexture);
-    m_overlayKey = 0;
+    glGenTextures(kOverlaySlots, m_overlayTextures);
+    std::fill(std::begin(m_overlayKeys), std::end(m_overlayKeys), 0);
     // A new context has none of the old buffers: upload everything again.
     m_meshesDirty = true;
     m_instancesDirty = true;
@@ -109,9 +109,9 @@ void Renderer::release() {
     m_selectionBuffer = 0;
     m_selectionBufferCapacity = 0;
     glDeleteVertexArrays(1, &m_emptyVao);
-    glDeleteTextures(1, &m_overlayTexture);
-    m_overlayTexture = 0;
-    m_overlayKey = 0;
+    glDeleteTextures(kOverlaySlots, m_overlayTextures);
+    std::fill(std::begin(m_overlayTextures), std::end(m_overlayTextures), 0u);
+    std::fill(std::begin(m_overlayKeys), std::end(m_overlayKeys), 0);
     m_instanceBuffer = 0;
     m_emptyVao = 0;
     m_instanceBufferCapacity = 0;
@@ -205,6 +205,20 @@ void Renderer::setTransforms(std::span<const glm::mat4> models) {
         const int slot = m_slotOfInstance[i];
         if (slot >= 0)
             m_instances[slot].model = models[i];
+    }
+    m_instancesDirty = true;
+    for (size_t k = 0; k < m_selectedSlots.size(); ++k)
+        m_selected[k].model = m_instances[m_selectedSlots[k]].model;
+    m_selectionDirty = m_selectionDirty || !m_selectedSlots.empty();
+}
+
+void Renderer::setInstanceTransforms(const ViewportScene& scene, std::span<const int> instances) {
+    for (int i : instances) {
+        if (i < 0 || i >= static_cast<int>(m_slotOfInstance.size()) || i >= static_cast<int>(scene.instances.size()))
+            continue;
+        const int slot = m_slotOfInstance[i];
+        if (slot >= 0)
+            m_instances[slot].model = scene.instances[i].model;
     }
     m_instancesDirty = true;
     for (size_t k = 0; k < m_selectedSlots.size(); ++k)
@@ -411,12 +425,12 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     glUseProgram(0);
 }
 
-void Renderer::drawOverlay(const QImage& image, int x, int y, int pixelWidth, int pixelHeight) {
-    if (!m_initialized || image.isNull() || pixelWidth <= 0 || pixelHeight <= 0)
+void Renderer::drawOverlay(const QImage& image, int x, int y, int pixelWidth, int pixelHeight, int slot) {
+    if (!m_initialized || image.isNull() || pixelWidth <= 0 || pixelHeight <= 0 || slot < 0 || slot >= kOverlaySlots)
         return;
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, m_overlayTexture);
-    if (image.cacheKey() != m_overlayKey) {
+    glBindTexture(GL_TEXTURE_2D, m_overlayTextures[slot]);
+    if (image.cacheKey() != m_overlayKeys[slot]) {
         const QImage rgba = image.convertToFormat(QImage::Format_RGBA8888_Premultiplied);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, rgba.width(), rgba.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -426,7 +440,7 @@ void Renderer::drawOverlay(const QImage& image, int x, int y, int pixelWidth, in
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        m_overlayKey = image.cacheKey();
+        m_overlayKeys[slot] = image.cacheKey();
     }
     const float x0 = 2.0f * static_cast<float>(x) / static_cast<float>(pixelWidth) - 1.0f;
     const float y1 = 1.0f - 2.0f * static_cast<float>(y) / static_cast<float>(pixelHeight);

@@ -44,14 +44,18 @@ public:
     void setInstanceAttributes(const ViewportScene& scene);
     // Playback: new model matrices in instance order; only the instance buffer is re-uploaded.
     void setTransforms(std::span<const glm::mat4> models);
+    // A few instances moved (a gizmo drag): their models are taken from the scene, the rest is left alone.
+    void setInstanceTransforms(const ViewportScene& scene, std::span<const int> instances);
 
     // Draws into the bound framebuffer. pixelWidth/Height are device pixels.
     void render(const Camera& camera, int pixelWidth, int pixelHeight, const RenderOptions& options);
 
     // Blends a premultiplied image over the frame with its top-left at (x, y) device pixels: the axis indicator,
     // painted with QPainter into a QImage because QPainter on the GL widget itself costs far more per frame.
-    // The texture is re-uploaded only when the image's cacheKey() changes.
-    void drawOverlay(const QImage& image, int x, int y, int pixelWidth, int pixelHeight);
+    // Each slot keeps its own texture, re-uploaded only when that slot's image cacheKey() changes: slot 0 is the
+    // owner's overlay painter, 1 the axis indicator, 2 the transform gizmo.
+    static constexpr int kOverlaySlots = 3;
+    void drawOverlay(const QImage& image, int x, int y, int pixelWidth, int pixelHeight, int slot = 0);
 
     int drawCallsLastFrame() const { return m_drawCalls; }
 
@@ -92,9 +96,9 @@ private:
     std::unique_ptr<QOpenGLShaderProgram> m_backgroundProgram;
     std::unique_ptr<QOpenGLShaderProgram> m_gridProgram;
     std::unique_ptr<QOpenGLShaderProgram> m_overlayProgram;
-    unsigned m_overlayTexture = 0;
-    qint64 m_overlayKey = 0; // cacheKey() of the image in m_overlayTexture
-    unsigned m_emptyVao = 0; // core profile needs a bound VAO even for attribute-less draws
+    unsigned m_overlayTextures[kOverlaySlots] = {};
+    qint64 m_overlayKeys[kOverlaySlots] = {}; // cacheKey() of the image in each texture
+    unsigned m_emptyVao = 0;                  // core profile needs a bound VAO even for attribute-less draws
     unsigned m_instanceBuffer = 0;
     size_t m_instanceBufferCapacity = 0;
 

@@ -2,6 +2,7 @@
 
 #include "viewport/Overlays.h"
 
+#include <QCursor>
 #include <QElapsedTimer>
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -39,7 +40,7 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     format.setSamples(0);
     setFormat(format);
     setFocusPolicy(Qt::StrongFocus);
-    setMouseTracking(false);
+    setMouseTracking(true); // the gizmo highlights the handle under the cursor
     m_camera.setViewportSize(width(), height());
 }
 
@@ -91,15 +92,16 @@ void Viewport::paintGL() {
             painter.setRenderHint(QPainter::Antialiasing);
             m_overlayPainter(painter, m_camera, size());
         }
-        m_renderer.drawOverlay(m_overlayImage, 0, 0, pixels.width(), pixels.height());
+        m_renderer.drawOverlay(m_overlayImage, 0, 0, pixels.width(), pixels.height(), 0);
     }
     if (m_axisGizmo) {
         updateGizmoImage();
         const int margin = static_cast<int>(std::lround(6 * ratio));
         m_renderer.drawOverlay(
             m_gizmoImage, margin, static_cast<int>(std::lround(height() * ratio)) - margin - m_gizmoImage.height(),
-            static_cast<int>(std::lround(width() * ratio)), static_cast<int>(std::lround(height() * ratio)));
+            static_cast<int>(std::lround(width() * ratio)), static_cast<int>(std::lround(height() * ratio)), 1);
     }
+    paintTransformGizmo();
     if (m_measureFrameTime)
         context()->functions()->glFinish();
 
@@ -131,8 +133,20 @@ void Viewport::updateGizmoImage() {
 }
 
 void Viewport::setScene(ViewportScene scene) {
+    if (isTransforming()) {
+        // The scene under the drag is gone (an undo, a reload): the preview goes with it.
+        m_gizmo.endDrag();
+        m_drag = Drag::None;
+        m_transformStart.clear();
+        emit transformCancelled();
+    }
     m_scene = std::move(scene);
+    m_meshBounds.clear();
+    m_meshBounds.reserve(m_scene.meshes.size());
+    for (const ViewportMesh& mesh : m_scene.meshes)
+        m_meshBounds.push_back(mesh.bounds());
     m_renderer.setScene(m_scene);
+    updateSelectionCentre();
     update();
 }
 
@@ -141,6 +155,7 @@ void Viewport::setTransforms(std::span<const glm::mat4> models) {
     for (size_t i = 0; i < count; ++i)
         m_scene.instances[i].model = models[i];
     m_renderer.setTransforms(models.first(count));
+    updateSelectionCentre();
     update();
 }
 
@@ -151,6 +166,7 @@ void Viewport::setSelection(const QList<int>& instances) {
         if (i >= 0 && i < static_cast<int>(m_scene.instances.size()))
             m_scene.instances[i].flags |= kInstanceSelected;
     m_renderer.setInstanceAttributes(m_scene);
+    updateSelectionCentre();
     update();
 }
 
@@ -224,6 +240,24 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     m_pressPosition = position;
     m_lastPosition = position;
     const Qt::KeyboardModifiers mods = event->modifiers();
+    if (isTransforming()) {
+        // Right button cancels (Blender); a left click confirms a modal transform.
+        if (event->button() == Qt::RightButton)
+            cancelTransform();
+        else if (m_drag == Drag::Modal && event->button() == Qt::LeftButton)
+            finishTransform();
+        event->accept();
+        return;
+    }
+    if (event->button() == Qt::LeftButton && !(mods & Qt::AltModifier) && layoutGizmo()) {
+        const GizmoHandle handle = m_gizmo.hitTest(event->position());
+        if (handle != GizmoHandle::None && m_gizmo.beginDrag(handle, m_camera, event->position())) {
+            m_drag = Drag::Gizmo;
+            beginTransform();
+            event->accept();
+            return;
+        }
+    }
     if (event->button() == Qt::MiddleButton) {
         m_drag = (mods & Qt::ShiftModifier) ? Drag::Pan : (mods & Qt::ControlModifier) ? Drag::Zoom : Drag::Orbit;
     } else if (event->button() == Qt::LeftButton && (mods & Qt::AltModifier)) {
@@ -267,9 +301,20 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     case Drag::BoxSelect:
         m_rubberBand->setGeometry(QRect(m_pressPosition, position).normalized());
         break;
-    case Drag::None:
+    case Drag::Gizmo:
+    case Drag::Modal:
+        m_modalLastMouse = event->position();
+        previewTransform(event->position(), event->modifiers() & Qt::ControlModifier);
+        break;
+    case Drag::None: {
+        const GizmoHandle hovered = layoutGizmo() ? m_gizmo.hitTest(event->position()) : GizmoHandle::None;
+        if (hovered != m_hoveredHandle) {
+            m_hoveredHandle = hovered;
+            update();
+        }
         QOpenGLWidget::mouseMoveEvent(event);
         return;
+    }
     }
     m_lastPosition = position;
     event->accept();
@@ -281,6 +326,16 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     m_drag = Drag::None;
     if (drag == Drag::PendingClick) {
         clickSelect(position, m_extendSelection);
+    } else if (drag == Drag::Gizmo) {
+        if (event->button() == Qt::LeftButton) {
+            previewTransform(event->position(), event->modifiers() & Qt::ControlModifier);
+            m_drag = Drag::Gizmo; // finishTransform ends it
+            finishTransform();
+        } else {
+            m_drag = drag; // another button's release does not end the drag
+        }
+    } else if (drag == Drag::Modal) {
+        m_drag = drag; // a modal transform ends with a click, Enter or Escape
     } else if (drag == Drag::BoxSelect) {
         m_lastPosition = position;
         m_rubberBand->hide();
@@ -327,6 +382,17 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
         }
     }
     const float half = glm::half_pi<float>();
+    if (isTransforming()) {
+        if (key == Qt::Key_Escape) {
+            cancelTransform();
+        } else if (m_drag == Drag::Modal && (key == Qt::Key_Return || key == Qt::Key_Enter)) {
+            finishTransform();
+        } else if (key == Qt::Key_Control) {
+            previewTransform(m_modalLastMouse, true); // snapping follows Ctrl without waiting for a mouse move
+        }
+        event->accept(); // no camera keys or shortcuts in the middle of a transform
+        return;
+    }
     if (key == Qt::Key_Escape && m_drag == Drag::BoxSelect) {
         m_drag = Drag::None;
         m_rubberBand->hide();
@@ -351,6 +417,182 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
         return;
     }
     event->accept();
+}
+
+void Viewport::keyReleaseEvent(QKeyEvent* event) {
+    if (isTransforming() && event->key() == Qt::Key_Control) {
+        previewTransform(m_modalLastMouse, false);
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::keyReleaseEvent(event);
+}
+
+void Viewport::leaveEvent(QEvent* event) {
+    if (m_hoveredHandle != GizmoHandle::None) {
+        m_hoveredHandle = GizmoHandle::None;
+        update();
+    }
+    QOpenGLWidget::leaveEvent(event);
+}
+
+void Viewport::setTool(GizmoTool tool) {
+    if (tool == m_tool)
+        return;
+    if (isTransforming())
+        cancelTransform();
+    m_tool = tool;
+    m_hoveredHandle = GizmoHandle::None;
+    emit toolChanged(tool);
+    update();
+}
+
+void Viewport::updateSelectionCentre() {
+    Bounds box;
+    for (const ViewportInstance& inst : m_scene.instances) {
+        if (!(inst.flags & kInstanceSelected) || (inst.flags & kInstanceHidden))
+            continue;
+        if (inst.meshIndex < 0 || inst.meshIndex >= static_cast<int>(m_meshBounds.size()))
+            continue;
+        const Bounds& local = m_meshBounds[inst.meshIndex];
+        if (local.isEmpty())
+            continue;
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
+                              (corner & 4) ? local.max.z : local.min.z);
+            box.extend(glm::vec3(inst.model * glm::vec4(p, 1.0f)));
+        }
+    }
+    m_selectionCentre = box.isEmpty() ? std::nullopt : std::optional<glm::vec3>(box.centre());
+}
+
+bool Viewport::layoutGizmo() {
+    // The camera's viewport size may lag behind a resize that has not been painted yet.
+    m_camera.setViewportSize(width(), height());
+    const GizmoTool tool = m_drag == Drag::Modal ? m_modalTool : m_tool;
+    m_gizmo.setTool(m_selectionCentre ? tool : GizmoTool::Select);
+    m_gizmo.layout(m_camera, m_selectionCentre.value_or(glm::vec3(0.0f)));
+    return m_gizmo.isVisible();
+}
+
+std::optional<QPointF> Viewport::gizmoHandlePosition(GizmoHandle handle) {
+    if (!layoutGizmo())
+        return std::nullopt;
+    return m_gizmo.handlePoint(handle);
+}
+
+void Viewport::paintTransformGizmo() {
+    if (!layoutGizmo())
+        return;
+    // Painted into an image just big enough for the gizmo, so a frame uploads a few hundred kilobytes at most.
+    const QRect bounds = m_gizmo.paintBounds().toAlignedRect().intersected(rect());
+    if (bounds.isEmpty())
+        return;
+    const qreal ratio = devicePixelRatioF();
+    const QSize pixels(static_cast<int>(std::lround(bounds.width() * ratio)),
+                       static_cast<int>(std::lround(bounds.height() * ratio)));
+    if (m_transformImage.size() != pixels) {
+        m_transformImage = QImage(pixels, QImage::Format_RGBA8888_Premultiplied);
+        m_transformImage.setDevicePixelRatio(ratio);
+    }
+    m_transformImage.fill(Qt::transparent);
+    {
+        QPainter painter(&m_transformImage);
+        painter.translate(-bounds.topLeft());
+        m_gizmo.paint(painter, m_hoveredHandle);
+    }
+    m_renderer.drawOverlay(m_transformImage, static_cast<int>(std::lround(bounds.x() * ratio)),
+                           static_cast<int>(std::lround(bounds.y() * ratio)),
+                           static_cast<int>(std::lround(width() * ratio)),
+                           static_cast<int>(std::lround(height() * ratio)), 2);
+}
+
+void Viewport::beginTransform() {
+    m_transformStart.clear();
+    m_transformInstances.clear();
+    for (int i = 0; i < static_cast<int>(m_scene.instances.size()); ++i)
+        if (m_scene.instances[i].flags & kInstanceSelected) {
+            m_transformStart.emplace_back(i, m_scene.instances[i].model);
+            m_transformInstances.push_back(i);
+        }
+    m_transformDelta = RigidDelta{};
+    m_transformDelta.pivot = glm::dvec3(m_selectionCentre.value_or(glm::vec3(0.0f)));
+    m_hoveredHandle = GizmoHandle::None;
+    emit transformStarted();
+    update();
+}
+
+void Viewport::previewTransform(const QPointF& mouse, bool snap) {
+    if (!isTransforming())
+        return;
+    m_modalLastMouse = mouse;
+    const glm::vec3 before = m_gizmo.centre();
+    m_transformDelta = m_gizmo.dragTo(m_camera, mouse, snap);
+    // Only the moved instances change; the renderer re-uploads its instance buffer once, in paintGL.
+    const glm::mat4 motion = m_transformDelta.matrix();
+    for (const auto& [instance, model] : m_transformStart)
+        m_scene.instances[instance].model = motion * model;
+    m_renderer.setInstanceTransforms(m_scene, m_transformInstances);
+    // The gizmo follows a move; a rotation turns about a fixed centre.
+    const glm::vec3 pivot(m_transformDelta.pivot);
+    m_selectionCentre = pivot + glm::vec3(m_transformDelta.translation);
+    Q_UNUSED(before);
+    update();
+}
+
+void Viewport::finishTransform() {
+    const QList<int> instances(m_transformInstances.begin(), m_transformInstances.end());
+    const RigidDelta delta = m_transformDelta;
+    m_gizmo.endDrag();
+    m_drag = Drag::None;
+    m_transformStart.clear();
+    updateSelectionCentre();
+    update();
+    if (!delta.isIdentity())
+        emit transformFinished(instances, delta);
+    else
+        emit transformCancelled();
+}
+
+void Viewport::restoreTransformStart() {
+    for (const auto& [instance, model] : m_transformStart)
+        m_scene.instances[instance].model = model;
+    m_renderer.setInstanceTransforms(m_scene, m_transformInstances);
+}
+
+void Viewport::cancelTransform() {
+    if (!isTransforming())
+        return;
+    restoreTransformStart();
+    m_gizmo.endDrag();
+    m_drag = Drag::None;
+    m_transformStart.clear();
+    updateSelectionCentre();
+    update();
+    emit transformCancelled();
+}
+
+bool Viewport::startModalTransform(GizmoTool tool) {
+    if (isTransforming() || m_drag != Drag::None || tool == GizmoTool::Select || !m_selectionCentre)
+        return false;
+    QPointF mouse = mapFromGlobal(QCursor::pos());
+    if (!rect().contains(mouse.toPoint()))
+        mouse = QPointF(0.5 * width(), 0.5 * height());
+    m_modalTool = tool;
+    m_drag = Drag::Modal;
+    if (!layoutGizmo()) {
+        m_drag = Drag::None;
+        return false;
+    }
+    const GizmoHandle handle = tool == GizmoTool::Move ? GizmoHandle::MoveView : GizmoHandle::RotateView;
+    if (!m_gizmo.beginDrag(handle, m_camera, mouse)) {
+        m_drag = Drag::None;
+        return false;
+    }
+    m_modalLastMouse = mouse;
+    setFocus(Qt::OtherFocusReason);
+    beginTransform();
+    return true;
 }
 
 void Viewport::clickSelect(const QPoint& position, bool extend) {

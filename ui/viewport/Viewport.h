@@ -3,6 +3,7 @@
 #pragma once
 
 #include "viewport/Camera.h"
+#include "viewport/Gizmo.h"
 #include "viewport/Renderer.h"
 #include "viewport/ViewportScene.h"
 
@@ -13,7 +14,10 @@
 #include <QRect>
 
 #include <functional>
+#include <optional>
 #include <span>
+#include <utility>
+#include <vector>
 
 class QPainter;
 class QRubberBand;
@@ -64,6 +68,22 @@ public:
     void setGridVisible(bool visible);
     void setAxisGizmoVisible(bool visible);
 
+    // Transform tools (Q select, W move, E rotate). With Move or Rotate and a selection, the gizmo sits at the centre
+    // of the selection's box; a left drag on a handle previews the motion on the selected instances and ends with
+    // transformFinished (the owner turns it into one undo step). Ctrl snaps; Escape or the right button cancels.
+    void setTool(GizmoTool tool);
+    GizmoTool tool() const { return m_tool; }
+    // Centre of the selected instances' world box; empty without a selection.
+    std::optional<glm::vec3> selectionCentre() const { return m_selectionCentre; }
+    // Widget pixel of a handle that a press there would grab; empty when the gizmo or that handle is not shown.
+    std::optional<QPointF> gizmoHandlePosition(GizmoHandle handle);
+    GizmoHandle hoveredHandle() const { return m_hoveredHandle; }
+    bool isTransforming() const { return m_drag == Drag::Gizmo || m_drag == Drag::Modal; }
+    // Blender's G and R: moves in the view plane, or turns about the view axis, with the mouse until a left click
+    // (or Enter) confirms and Escape or the right button cancels. Needs a selection.
+    bool startModalTransform(GizmoTool tool);
+    void cancelTransform();
+
     // Frame time: wall time of paintGL (scene, outline, grid, overlays). With measurement on, paintGL ends with
     // glFinish so that the figure includes the rasterisation, which llvmpipe otherwise finishes later.
     void setFrameTimeMeasurement(bool on) { m_measureFrameTime = on; }
@@ -82,6 +102,12 @@ signals:
     void selectionChanged(const QList<int>& instances, bool extend);
     void frameRendered(double milliseconds);
     void cameraChanged();
+    void toolChanged(rl::GizmoTool tool);
+    // A gizmo drag or modal transform: started, previewed, and either finished with the motion to apply to these
+    // instances (the selection when it started) or cancelled (the preview is undone).
+    void transformStarted();
+    void transformFinished(const QList<int>& instances, const rl::RigidDelta& delta);
+    void transformCancelled();
 
 protected:
     void initializeGL() override;
@@ -93,15 +119,24 @@ protected:
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
+    void keyReleaseEvent(QKeyEvent* event) override;
+    void leaveEvent(QEvent* event) override;
 
 private:
-    enum class Drag { None, Orbit, Pan, Zoom, PendingClick, BoxSelect };
+    enum class Drag { None, Orbit, Pan, Zoom, PendingClick, BoxSelect, Gizmo, Modal };
 
     void cleanup();
     void clickSelect(const QPoint& position, bool extend);
     void boxSelect(const QRect& rectangle, bool extend);
     void cameraMoved();
     void updateGizmoImage();
+    void updateSelectionCentre();
+    bool layoutGizmo();
+    void paintTransformGizmo();
+    void beginTransform();
+    void previewTransform(const QPointF& mouse, bool snap);
+    void finishTransform();
+    void restoreTransformStart();
 
     ViewportScene m_scene;
     Renderer m_renderer;
@@ -119,6 +154,18 @@ private:
     QPoint m_pressPosition;
     QPoint m_lastPosition;
     bool m_extendSelection = false;
+
+    GizmoTool m_tool = GizmoTool::Select;
+    GizmoTool m_modalTool = GizmoTool::Move; // what G (Move) or R (Rotate) started
+    TransformGizmo m_gizmo;
+    std::vector<Bounds> m_meshBounds; // shape coordinates, per mesh of m_scene
+    std::optional<glm::vec3> m_selectionCentre;
+    GizmoHandle m_hoveredHandle = GizmoHandle::None;
+    QImage m_transformImage;
+    std::vector<std::pair<int, glm::mat4>> m_transformStart; // selected instances and their models at the press
+    std::vector<int> m_transformInstances;
+    RigidDelta m_transformDelta;
+    QPointF m_modalLastMouse;
 
     bool m_measureFrameTime = true;
     double m_lastFrameMs = 0.0;

@@ -24,6 +24,9 @@ public:
     int id() const override { return m_mergeId; }
     bool mergeWith(const QUndoCommand* other) override;
 
+    const QList<int>& indices() const { return m_indices; }
+    const std::vector<BodyDef>& after() const { return m_after; }
+
 private:
     SceneDocument* m_document;
     QList<int> m_indices;

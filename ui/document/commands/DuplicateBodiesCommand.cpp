@@ -1,0 +1,47 @@
+#include "document/commands/DuplicateBodiesCommand.h"
+
+#include "document/SceneDocument.h"
+#include "document/commands/SetBodiesCommand.h"
+
+#include <QCoreApplication>
+
+namespace rl {
+
+DuplicateBodiesCommand::DuplicateBodiesCommand(SceneDocument* document, std::vector<BodyDef> copies,
+                                               QUndoCommand* parent)
+    : QUndoCommand(parent), m_document(document), m_first(document->bodyCount()), m_copies(std::move(copies)) {
+    if (m_copies.size() == 1)
+        setText(QCoreApplication::translate("rl::Commands", "Duplicate as %1")
+                    .arg(QString::fromStdString(m_copies.front().name)));
+    else
+        setText(
+            QCoreApplication::translate("rl::Commands", "Duplicate %n bodies", "", static_cast<int>(m_copies.size())));
+}
+
+void DuplicateBodiesCommand::redo() {
+    for (size_t i = 0; i < m_copies.size(); ++i)
+        m_document->insertBody(m_first + static_cast<int>(i), m_copies[i]);
+}
+
+void DuplicateBodiesCommand::undo() {
+    for (size_t i = m_copies.size(); i > 0; --i)
+        m_document->removeBody(m_first + static_cast<int>(i) - 1);
+}
+
+bool DuplicateBodiesCommand::mergeWith(const QUndoCommand* other) {
+    const auto* move = dynamic_cast<const SetBodiesCommand*>(other);
+    if (!move || move->indices() != copyIndices() || move->after().size() != m_copies.size())
+        return false;
+    // The copies are now where the move left them: redo inserts them there, undo removes them.
+    m_copies = move->after();
+    return true;
+}
+
+QList<int> DuplicateBodiesCommand::copyIndices() const {
+    QList<int> indices;
+    for (size_t i = 0; i < m_copies.size(); ++i)
+        indices.append(m_first + static_cast<int>(i));
+    return indices;
+}
+
+} // namespace rl

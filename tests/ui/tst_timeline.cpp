@@ -419,6 +419,18 @@ private slots:
         QCOMPARE(labels[0].text, QStringLiteral("0"));
     }
 
+    void ctrlTSwitchesFramesAndSeconds() {
+        Fixture f(0, 600, QSize(900, 120));
+        QVERIFY(f.exposed);
+        QCOMPARE(f.view()->rulerLabels().back().text, QStringLiteral("600"));
+        QTest::keyClick(f.view(), Qt::Key_T, Qt::ControlModifier);
+        QVERIFY(f.widget.showSeconds());
+        QVERIFY(f.widget.findChild<QAction*>("TimelineSeconds")->isChecked());
+        QCOMPARE(f.view()->rulerLabels().back().text, QStringLiteral("10")); // 600 frames at 60 fps
+        QTest::keyClick(f.view(), Qt::Key_T, Qt::ControlModifier);
+        QVERIFY(!f.widget.showSeconds());
+    }
+
     void wheelZoomsAroundCursorAndPans() {
         Fixture f(0, 1000, QSize(1000, 120));
         QVERIFY(f.exposed);
@@ -726,10 +738,14 @@ private slots:
         QCOMPARE(f.widget.lastFrame(), 399);
         QCOMPARE(f.view()->trackCount(), 4);
         QCOMPARE(f.view()->sizeHint().height(), TimelineView::kRulerHeight + 4 * TimelineView::kTrackHeight);
-        // Folding the tracks away.
-        f.widget.setTracksVisible(false);
+        // The tracks ask for their room, so that a bottom dock grows to show them.
+        QCOMPARE(f.view()->minimumSizeHint().height(), TimelineView::kRulerHeight + 4 * TimelineView::kTrackHeight);
+        // Folding the tracks away (the toolbar button) gives it back.
+        f.widget.findChild<QAction*>("TimelineTracks")->trigger();
+        QVERIFY(!f.widget.tracksVisible());
         QVERIFY(f.view()->trackRect(0).isEmpty());
         QCOMPARE(f.view()->sizeHint().height(), TimelineView::kRulerHeight);
+        QCOMPARE(f.view()->minimumSizeHint().height(), TimelineView::kRulerHeight);
         f.widget.setTracksVisible(true);
         // A bake without diagnostics (an original-project file) has no tracks.
         f.widget.setBake(makeBake(50, 200.0, false));

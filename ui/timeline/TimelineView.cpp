@@ -228,7 +228,9 @@ QSize TimelineView::sizeHint() const {
 }
 
 QSize TimelineView::minimumSizeHint() const {
-    return QSize(kGutterWidth + 120, kRulerHeight);
+    // The tracks ask for their room, so a dock grows to show them when a bake brings them; folding them away (the
+    // toolbar's tracks button) gives the room back.
+    return QSize(kGutterWidth + 120, preferredHeight());
 }
 
 // ---- ruler ticks --------------------------------------------------------------------------------------------------

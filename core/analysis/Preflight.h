@@ -27,15 +27,15 @@ namespace rl {
 //   ConcaveDynamic  a dynamic body whose mesh is not convex: it collides as its convex hull, so hollows are filled.
 //   MassRatio       two dynamic bodies that touch or overlap at the start (world bounding boxes closer than
 //                   contactGap) with masses more than maxMassRatio apart. The sequential-impulse solver converges
-//                   slowly on such pairs: the light body sinks or jitters under the heavy one (README: a 1:1,000 pair
-//                   rests 1.8 cm deep at the default settings).
+//                   slowly on such pairs, so the light body sinks or jitters under the heavy one; the world spends
+//                   extra substeps on islands above 250:1 to hold them (World.cpp), so such scenes also bake slower.
 //   InvalidBody     a body the simulation cannot use at all (no volume, bad numbers); the bake would fail.
 enum class PreflightKind { TinyBody, Tunnelling, ConcaveDynamic, MassRatio, InvalidBody };
 std::string_view preflightKindName(PreflightKind kind); // "tiny-body", "tunnelling", ...
 
 struct PreflightOptions {
     Real minSize = 0.02;       // m, see TinyBody
-    Real maxMassRatio = 100.0; // see MassRatio: an order of magnitude below the 1:1,000 case that already sinks
+    Real maxMassRatio = 100.0; // see MassRatio: warns before the world's own 250:1 remedy sets in
     Real duration = 10.0;      // s, the bake's length (the CLI's default)
     Real contactGap = 0.01;    // m: bounding boxes this close count as touching
 };

@@ -755,6 +755,50 @@ private slots:
             QVERIFY(answerer.seen[0].text.contains("not_a_scene.xyz"));
     }
 
+    // Revert to Saved: back to the saved scene through the undo stack (Redo brings the changes back), or from the
+    // file when the saved state is not in the history (a restored autosave); Cancel keeps the changes.
+    void revertToSaved_data() {
+        QTest::addColumn<bool>("confirm");
+        QTest::addColumn<bool>("fromFile");
+        QTest::newRow("undo") << true << false;
+        QTest::newRow("from file") << true << true;
+        QTest::newRow("cancel") << false << false;
+    }
+    void revertToSaved() {
+        QFETCH(bool, confirm);
+        QFETCH(bool, fromFile);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("scene.rlscene");
+        rl::MainWindow window;
+        QVERIFY(showAndOpen(window, kScenes + "stack.obj"));
+        rl::SceneDocument* document = window.document();
+        auto* action = window.findChild<QAction*>("RevertAction");
+        QVERIFY(action);
+        QVERIFY(!action->isEnabled());
+        QVERIFY(window.files()->saveAs(path));
+        const rl::Scene saved = document->scene();
+        editBody(document, 1, [](rl::BodyDef& b) { b.anchor = true; });
+        editBody(document, 2, [](rl::BodyDef& b) { b.position.z = 3.0; });
+        if (fromFile)
+            document->markModified(); // as after restoring an autosave: no clean state in the history
+        QVERIFY(action->isEnabled());
+        const rl::Scene edited = document->scene();
+        BoxAnswerer boxes(confirm ? BoxAnswerer::pressNamed("RevertButton") : BoxAnswerer::Answer{});
+        action->trigger();
+        QCOMPARE(boxes.seen.size(), 1);
+        QCOMPARE(boxes.seen[0].name, QStringLiteral("RevertBox"));
+        QString why;
+        QVERIFY2(sameDefinitions(document->scene(), confirm ? saved : edited, &why), qPrintable(why));
+        QCOMPARE(document->isModified(), !confirm);
+        QCOMPARE(action->isEnabled(), !confirm);
+        if (confirm && !fromFile) {
+            QVERIFY(document->undoStack()->canRedo());
+            document->undoStack()->redo();
+            document->undoStack()->redo();
+            QVERIFY2(sameDefinitions(document->scene(), edited, &why), qPrintable(why));
+        }
+    }
+
     // File > New: an empty untitled scene, clean, with the default world.
     void newSceneIsEmptyAndClean() {
         rl::MainWindow window;
@@ -779,8 +823,8 @@ private slots:
             names << (action->isSeparator() ? QStringLiteral("-")
                       : action->menu()      ? action->menu()->objectName()
                                             : action->objectName());
-        const QStringList expected{"NewAction",  "OpenAction",   "RecentMenu", "ImportAction", "-",
-                                   "SaveAction", "SaveAsAction", "-",          "ExportMenu",   "-"};
+        const QStringList expected{"NewAction",    "OpenAction",   "RecentMenu", "ImportAction", "-", "SaveAction",
+                                   "SaveAsAction", "RevertAction", "-",          "ExportMenu",   "-"};
         QCOMPARE(names.mid(0, expected.size()), expected);
         QCOMPARE(names.last(), QStringLiteral("QuitAction"));
         QCOMPARE(window.findChild<QAction*>("SaveAsAction")->shortcut(), QKeySequence("Ctrl+Shift+S"));

@@ -135,6 +135,17 @@ void FileController::createActions() {
     saveAsAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
     connect(saveAsAction, &QAction::triggered, this, [this] { saveAs(); });
 
+    QAction* revertAction = makeAction("RevertAction", "document-revert", QStyle::SP_BrowserReload,
+                                       tr("Re&vert to Saved"), tr("Drop the changes made since the last save"));
+    connect(revertAction, &QAction::triggered, this, [this] { revert(); });
+    const auto updateRevert = [this, revertAction] {
+        SceneDocument* document = m_window->document();
+        revertAction->setEnabled(document->isModified() && !document->filePath().isEmpty());
+    };
+    connect(m_window->document()->undoStack(), &QUndoStack::cleanChanged, this, updateRevert);
+    connect(m_window->document(), &SceneDocument::filePathChanged, this, updateRevert);
+    updateRevert();
+
     QAction* quitAction =
         makeAction("QuitAction", "application-exit", QStyle::SP_DialogCloseButton, tr("&Quit"), tr("Quit RigidLab"));
     quitAction->setShortcut(QKeySequence::Quit);
@@ -148,6 +159,7 @@ void FileController::createActions() {
     fileMenu->addSeparator();
     fileMenu->addAction(saveAction);
     fileMenu->addAction(saveAsAction);
+    fileMenu->addAction(revertAction);
     fileMenu->addSeparator();
     fileMenu->addMenu(m_window->menu(MainWindow::Menu::Export));
     fileMenu->addSeparator();
@@ -364,6 +376,36 @@ bool FileController::saveTo(const QString& path) {
     m_changedSinceAutosave = false;
     showStatus(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
     return true;
+}
+
+bool FileController::revert() {
+    SceneDocument* document = m_window->document();
+    const QString path = document->filePath();
+    if (!document->isModified() || path.isEmpty())
+        return false;
+    QMessageBox box(QMessageBox::Warning, tr("Revert to Saved"),
+                    tr("Revert “%1” to the saved version?").arg(document->displayName()), QMessageBox::Cancel,
+                    m_window);
+    box.setObjectName("RevertBox");
+    QUndoStack* stack = document->undoStack();
+    const bool throughUndo = stack->cleanIndex() >= 0;
+    box.setInformativeText(throughUndo ? tr("The changes since the last save are undone; Redo brings them back.")
+                                       : tr("The file is read again; the changes since the last save are lost."));
+    QPushButton* revertButton = box.addButton(tr("&Revert"), QMessageBox::DestructiveRole);
+    revertButton->setObjectName("RevertButton");
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.setEscapeButton(QMessageBox::Cancel);
+    box.exec();
+    if (box.clickedButton() != revertButton)
+        return false;
+    if (throughUndo) {
+        stack->setIndex(stack->cleanIndex());
+        showStatus(tr("Reverted to the saved %1").arg(document->displayName()));
+        return true;
+    }
+    m_askedBeforeOpen = true;
+    const auto reset = qScopeGuard([this] { m_askedBeforeOpen = false; });
+    return openScene(path);
 }
 
 void FileController::openDroppedFiles(const QStringList& paths) {

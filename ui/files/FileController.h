@@ -51,6 +51,9 @@ public:
     // Saves to `path`, adding .rlscene when it has no extension. On failure the document stays modified, the old
     // file stays intact and a message box says why.
     bool saveAs(const QString& path);
+    // File > Revert to Saved: after a confirmation, goes back to the saved state. Through the undo stack when the
+    // saved state is in its history (so Redo brings the changes back), else by reading the file again.
+    bool revert();
     // Files dropped on the window: the first scene file opens, the other scene files are imported into it (one
     // undo step, so Ctrl+Z takes them out again); with no scene file, the first .bake opens.
     void openDroppedFiles(const QStringList& paths);

@@ -533,7 +533,7 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
         toSolver();
         {
             StageTimer t(m_profile, Stage::Relax);
-            for (int it = 0; it < m_iterations; ++it)
+            for (int it = 0; it < m_tuning.relaxIterations; ++it)
                 m_solver.solve(bodies, false);
         }
         fromSolver();

@@ -47,6 +47,10 @@ struct WorldTuning {
     // World::substepRefinement). Random boxes of half sizes 0.15-0.4 m span a ratio of 19; 1:1000 gets 2x.
     Real refineMassRatio = 250.0;
     int maxSubstepRefinement = 4;
+    // Sweeps of the relax pass per substep (the solve pass runs `iterations` sweeps). The relax pass only removes
+    // the push-apart velocity of the soft solve, and one sweep does that, as in Box2D v3. Measured with 2 instead:
+    // every tests/stability case passes either way, and the solver does a quarter less work with 1.
+    int relaxIterations = 1;
     // CCD sweeps a body that moves more than this fraction of its smallest size in one step.
     Real ccdFraction = 0.5;
 };

@@ -43,7 +43,8 @@ QIcon makePinIcon(bool on) {
     pixmap.fill(Qt::transparent);
     QPainter p(&pixmap);
     p.setRenderHint(QPainter::Antialiasing);
-    const QColor colour = on ? QColor(225, 225, 225) : QColor(150, 150, 150, 90);
+    // A mid blue reads on light and dark palettes alike; the dynamic state is a faint grey outline.
+    const QColor colour = on ? QColor(52, 120, 200) : QColor(128, 128, 128, 110);
     p.setPen(QPen(colour, 1.4, Qt::SolidLine, Qt::RoundCap));
     p.setBrush(on ? colour : Qt::transparent);
     p.drawEllipse(QPointF(8, 5), 3.2, 3.2);

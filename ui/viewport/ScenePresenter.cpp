@@ -65,6 +65,8 @@ glm::vec3 ScenePresenter::bodyColour(size_t index, bool anchor) {
 
 void ScenePresenter::rebuild(const Scene& scene) {
     m_bodies.clear();
+    if (m_cache.size() > scene.bodies.size())
+        m_cache.resize(scene.bodies.size());
     m_viewportScene = ViewportScene{};
     std::unordered_map<std::string, int> meshByKey;
     for (size_t i = 0; i < scene.bodies.size(); ++i) {
@@ -76,37 +78,45 @@ void ScenePresenter::rebuild(const Scene& scene) {
         body.position = def.position;
         body.orientation = glm::normalize(def.orientation);
 
-        std::vector<Vec3> vertices;
-        std::vector<std::array<uint32_t, 3>> triangles;
-        std::string key;
-        switch (def.shape.type) {
-        case ShapeType::Box:
-            key = "box" + std::to_string(def.shape.halfExtents.x) + "," + std::to_string(def.shape.halfExtents.y) +
-                  "," + std::to_string(def.shape.halfExtents.z);
-            break;
-        case ShapeType::Sphere:
-            key = "sphere" + std::to_string(def.shape.radius);
-            break;
-        case ShapeType::Hull: {
-            body.hull = computeConvexHull(def.shape.points);
-            const TriangleMesh mesh = hullMesh(body.hull);
-            vertices = mesh.vertices;
-            triangles = mesh.triangles;
-            key = meshKey(vertices, triangles);
-            break;
-        }
-        case ShapeType::Mesh:
-            body.hull = computeConvexHull(def.shape.points);
-            vertices = def.shape.points;
-            triangles = def.shape.triangles;
-            if (triangles.empty()) {
-                const TriangleMesh mesh = hullMesh(body.hull);
-                vertices = mesh.vertices;
-                triangles = mesh.triangles;
+        if (i >= m_cache.size())
+            m_cache.resize(i + 1);
+        ShapeCache& cache = m_cache[i];
+        if (cache.key.empty() || !(cache.shape == def.shape)) {
+            cache = ShapeCache{};
+            cache.shape = def.shape;
+            switch (def.shape.type) {
+            case ShapeType::Box:
+                cache.key = "box" + std::to_string(def.shape.halfExtents.x) + "," +
+                            std::to_string(def.shape.halfExtents.y) + "," + std::to_string(def.shape.halfExtents.z);
+                break;
+            case ShapeType::Sphere:
+                cache.key = "sphere" + std::to_string(def.shape.radius);
+                break;
+            case ShapeType::Hull: {
+                cache.hull = computeConvexHull(def.shape.points);
+                const TriangleMesh mesh = hullMesh(cache.hull);
+                cache.vertices = mesh.vertices;
+                cache.triangles = mesh.triangles;
+                cache.key = meshKey(cache.vertices, cache.triangles);
+                break;
             }
-            key = meshKey(vertices, triangles);
-            break;
+            case ShapeType::Mesh:
+                cache.hull = computeConvexHull(def.shape.points);
+                cache.vertices = def.shape.points;
+                cache.triangles = def.shape.triangles;
+                if (cache.triangles.empty()) {
+                    const TriangleMesh mesh = hullMesh(cache.hull);
+                    cache.vertices = mesh.vertices;
+                    cache.triangles = mesh.triangles;
+                }
+                cache.key = meshKey(cache.vertices, cache.triangles);
+                break;
+            }
         }
+        body.hull = cache.hull;
+        const std::vector<Vec3>& vertices = cache.vertices;
+        const std::vector<std::array<uint32_t, 3>>& triangles = cache.triangles;
+        std::string key = cache.key;
 
         auto found = meshByKey.find(key);
         int meshIndex;

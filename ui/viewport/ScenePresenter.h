@@ -6,6 +6,8 @@
 #include "scene/Scene.h"
 #include "viewport/ViewportScene.h"
 
+#include <array>
+#include <string>
 #include <vector>
 
 namespace rl {
@@ -34,7 +36,17 @@ private:
         Quat orientation{1.0, 0.0, 0.0, 0.0};
         glm::vec3 meshOffset{0.0f}; // where the shared mesh's origin sits in shape coordinates
     };
+    // What a body's shape costs to prepare (hull, drawn mesh, sharing key), kept per body index so that a rebuild
+    // after a move or a rename (the shape unchanged) skips the hull computation.
+    struct ShapeCache {
+        ShapeDef shape;
+        ConvexHull hull;
+        std::vector<Vec3> vertices;
+        std::vector<std::array<uint32_t, 3>> triangles;
+        std::string key;
+    };
     std::vector<BodyShape> m_bodies;
+    std::vector<ShapeCache> m_cache;
     ViewportScene m_viewportScene;
 };
 

@@ -18,14 +18,13 @@ DuplicateBodiesCommand::DuplicateBodiesCommand(SceneDocument* document, std::vec
             QCoreApplication::translate("rl::Commands", "Duplicate %n bodies", "", static_cast<int>(m_copies.size())));
 }
 
+// One change signal for all copies: the views rebuild once, not once per copy.
 void DuplicateBodiesCommand::redo() {
-    for (size_t i = 0; i < m_copies.size(); ++i)
-        m_document->insertBody(m_first + static_cast<int>(i), m_copies[i]);
+    m_document->insertBodies(m_first, m_copies);
 }
 
 void DuplicateBodiesCommand::undo() {
-    for (size_t i = m_copies.size(); i > 0; --i)
-        m_document->removeBody(m_first + static_cast<int>(i) - 1);
+    m_document->removeBodies(m_first, static_cast<int>(m_copies.size()));
 }
 
 bool DuplicateBodiesCommand::mergeWith(const QUndoCommand* other) {

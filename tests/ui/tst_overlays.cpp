@@ -602,6 +602,8 @@ private slots:
         timer.restart();
         overlays->clear();
         const double wakeMs = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
+        for (const rl::ViewportInstance& instance : w.viewport()->scene().instances)
+            QVERIFY(!(instance.flags & rl::kInstanceSleeping));
         qInfo("5000 bodies fall asleep in one frame: setFrame %.1f ms; clear() %.1f ms", sleepMs, wakeMs);
     }
 

@@ -235,7 +235,8 @@ void OverlayController::applySleeping() {
         return;
     // setInstanceAppearance re-gathers every instance per call, so a whole pile falling asleep in one frame would
     // cost n^2; past a few changes, one setScene with the flags changed is cheaper (measured in tst_overlays).
-    if (changed.size() > kSleepingBatchThreshold) {
+    // (Not during a gizmo drag: setScene cancels it.)
+    if (changed.size() > kSleepingBatchThreshold && !viewport->isTransforming()) {
         ViewportScene scene = viewport->scene();
         for (int i : changed)
             scene.instances[i].flags ^= kInstanceSleeping;

@@ -538,6 +538,7 @@ void TimelineView::paintEvent(QPaintEvent* event) {
     const qreal dpr = m_cache.devicePixelRatio();
     const QRect r = event->rect();
     p.drawPixmap(r.topLeft(), m_cache, QRectF(r.x() * dpr, r.y() * dpr, r.width() * dpr, r.height() * dpr));
+    paintProgress(p);
     paintCursor(p);
 }
 
@@ -588,6 +589,30 @@ void TimelineView::rebuildCache() {
     m_cacheValid = true;
 }
 
+// Bake in progress: a striped bar growing from the first frame. Drawn over the cache, so that the updates of a
+// running bake (ten a second) repaint a 5-pixel strip instead of the whole background.
+void TimelineView::paintProgress(QPainter& p) {
+    if (m_timeline->progress() < 0.0)
+        return;
+    const Colors c = colorsFor(palette());
+    const QRectF plot = plotRect();
+    const int first = m_timeline->firstFrame();
+    const int last = m_timeline->lastFrame();
+    const int barTop = kRulerHeight - kBakeBarHeight;
+    const double f = std::clamp(m_timeline->progress(), 0.0, 1.0);
+    const double x0 = std::clamp(xForFrame(first), plot.left(), plot.right());
+    const double x1 = std::clamp(xForFrame(first + f * (last - first)), plot.left(), plot.right());
+    const double xLast = std::clamp(xForFrame(last), plot.left(), plot.right());
+    const QRectF bar(x0, barTop, x1 - x0, kBakeBarHeight);
+    p.fillRect(QRectF(x0, barTop, xLast - x0, kBakeBarHeight), withAlpha(c.progress, 45));
+    p.fillRect(bar, c.progress);
+    p.fillRect(bar, QBrush(c.progress.lighter(130), Qt::BDiagPattern));
+}
+
+void TimelineView::progressChanged() {
+    update(QRect(kGutterWidth, kRulerHeight - kBakeBarHeight, width() - kGutterWidth, kBakeBarHeight));
+}
+
 void TimelineView::paintRuler(QPainter& p) {
     const Colors c = colorsFor(palette());
     const QRect ruler = rulerRect();
@@ -619,17 +644,6 @@ void TimelineView::paintRuler(QPainter& p) {
             p.fillRect(bar, c.baked);
         }
     }
-    // Bake in progress: a striped bar growing from the first frame.
-    if (m_timeline->progress() >= 0.0) {
-        const double f = std::clamp(m_timeline->progress(), 0.0, 1.0);
-        const double x0 = std::clamp(xForFrame(first), plot.left(), plot.right());
-        const double x1 = std::clamp(xForFrame(first + f * (last - first)), plot.left(), plot.right());
-        const QRectF bar(x0, barTop, x1 - x0, kBakeBarHeight);
-        p.fillRect(QRectF(x0, barTop, xLast - x0, kBakeBarHeight), withAlpha(c.progress, 45));
-        p.fillRect(bar, c.progress);
-        p.fillRect(bar, QBrush(c.progress.lighter(130), Qt::BDiagPattern));
-    }
-
     // Ticks and labels.
     const Ticks ticks = chooseTicks();
     p.save();

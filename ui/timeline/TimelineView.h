@@ -59,6 +59,7 @@ public:
     void rebuildTracks(); // the bake changed
     void invalidate();    // anything drawn in the background changed
     void cursorMoved(int from, int to);
+    void progressChanged(); // repaints the progress strip only
     int preferredHeight() const;
 
     QSize sizeHint() const override;
@@ -108,6 +109,7 @@ private:
     void paintRuler(QPainter& p);
     void paintTrack(QPainter& p, const Track& track, const QRect& r);
     void paintSeries(QPainter& p, const Series& s, const QRect& r, float lo, float hi, bool fill);
+    void paintProgress(QPainter& p);
     void paintCursor(QPainter& p);
     void scrubTo(double x);
 

@@ -333,7 +333,7 @@ void TimelineWidget::setProgress(double fraction, const QString& text) {
         m_progressLabel->setText(label);
         m_progressLabel->setVisible(true);
     }
-    m_view->invalidate();
+    m_view->progressChanged();
 }
 
 void TimelineWidget::setCurrentFrame(int frame) {

@@ -469,6 +469,29 @@ private slots:
         QCOMPARE(f.view()->viewEnd(), 1020.0);
     }
 
+    void theCursorStaysInView() {
+        Fixture f(0, 1000, QSize(900, 120));
+        QVERIFY(f.exposed);
+        f.widget.setBake(makeBake(1001));
+        QCOMPARE(f.view()->viewEnd(), 1020.0); // the view followed the range
+        f.view()->setViewRange(100, 200);
+        QTest::keyClick(f.view(), Qt::Key_End);
+        QVERIFY(f.view()->viewStart() <= 1000 && f.view()->viewEnd() >= 1000);
+        QTest::keyClick(f.view(), Qt::Key_Home);
+        QVERIFY(f.view()->viewStart() <= 0 && f.view()->viewEnd() >= 0);
+        // Playback pages along.
+        qint64 clock = 0;
+        f.widget.setClock([&] { return clock; });
+        f.view()->setViewRange(0, 100);
+        f.widget.play();
+        clock = 3 * kSecond;
+        f.widget.advancePlayback();
+        QCOMPARE(f.widget.currentFrame(), 180);
+        QVERIFY(f.view()->viewStart() <= 180 && f.view()->viewEnd() >= 180);
+        QVERIFY(std::abs(f.view()->viewEnd() - f.view()->viewStart() - 100.0) < 1e-9); // the zoom is kept
+        f.widget.pause();
+    }
+
     void playbackFollowsTheClock_data() {
         QTest::addColumn<double>("speed");
         QTest::addColumn<qint64>("elapsed");

@@ -498,6 +498,7 @@ bool TimelineView::event(QEvent* event) {
 // ---- painting -----------------------------------------------------------------------------------------------------
 
 void TimelineView::invalidate() {
+    fitIfFollowing(); // the mapping follows a new frame range at once, not at the next paint
     m_cacheValid = false;
     update();
 }

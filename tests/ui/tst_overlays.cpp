@@ -588,6 +588,27 @@ private slots:
         // Generous bound on a loaded 2-core machine: culled geometry must not cost like drawn geometry.
         QVERIFY2(closeMs < 200.0, qPrintable(QString::number(closeMs)));
 
+        // Trails of a selection of 1,000: drawn for the first kMaxTrailBodies only. Frame 0 was on show when trails
+        // were switched on, then 3 more: 4 points, 3 segments each.
+        for (auto kind : {OverlayController::Aabbs, OverlayController::Velocities, OverlayController::Centres})
+            overlays->setEnabled(kind, false);
+        overlays->setEnabled(OverlayController::Trails, true);
+        w.viewport()->frameAll();
+        QList<int> thousand;
+        for (int i = 0; i < 1000; ++i)
+            thousand.append(i);
+        w.window.setSelectedBodies(thousand);
+        for (int f = 1; f <= 3; ++f) {
+            frame.frame = f;
+            for (glm::vec3& centre : frame.centres)
+                centre.y += 0.1f;
+            overlays->setFrame(frame);
+        }
+        QCOMPARE(overlays->trail(999).size(), size_t(4));
+        measure("trails, 1000 selected");
+        QCOMPARE(overlays->lastPaintStats().lines, OverlayController::kMaxTrailBodies * 3);
+        overlays->setEnabled(OverlayController::Trails, false);
+
         // Every body falls asleep in one frame, then wakes: the flag change for 5,000 instances, timed.
         overlays->setEnabled(OverlayController::Sleeping, true);
         std::fill(frame.sleeping.begin(), frame.sleeping.end(), 1);

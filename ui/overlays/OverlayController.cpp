@@ -280,10 +280,12 @@ void OverlayController::paint(QPainter& painter, const Camera& camera, const QSi
     input.centres = m_enabled[Centres];
     input.aabbs = m_enabled[Aabbs];
     m_trailScratch.clear();
-    if (m_enabled[Trails])
-        for (int body : m_window->selectedBodies())
-            if (std::vector<glm::vec3> points = trail(body); points.size() > 1)
+    if (m_enabled[Trails]) {
+        const QList<int> selected = m_window->selectedBodies();
+        for (qsizetype i = 0; i < selected.size() && i < kMaxTrailBodies; ++i)
+            if (std::vector<glm::vec3> points = trail(selected[i]); points.size() > 1)
                 m_trailScratch.push_back(std::move(points));
+    }
     input.trails = &m_trailScratch;
     input.legend = legendEntries();
     m_lastStats = paintOverlays(painter, camera, size, input);

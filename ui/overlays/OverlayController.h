@@ -29,6 +29,9 @@ class OverlayController : public QObject {
 public:
     enum Kind { Contacts, Velocities, Centres, Aabbs, Sleeping, Trails, KindCount };
     static constexpr int kTrailMaxGapFrames = 30; // half a second at 60 Hz: a longer straight segment would mislead
+    // Trails are drawn for at most this many selected bodies (the first in body order), so that a box selection of
+    // a whole pile does not turn every paint into hundreds of thousands of segments.
+    static constexpr int kMaxTrailBodies = 256;
 
     explicit OverlayController(MainWindow* window);
     ~OverlayController() override;

@@ -536,6 +536,12 @@ void TestEditing::windowScreenshotWithGizmo() {
     sendMouse(viewport(), QEvent::MouseButtonRelease, handle + QPointF(60, 10), Qt::LeftButton, Qt::NoButton);
     QCOMPARE(document()->undoStack()->count(), 1);
     QVERIFY(!during.isNull());
+    for (auto [which, file] :
+         {std::pair{rl::MainWindow::Menu::Edit, "edit"}, std::pair{rl::MainWindow::Menu::Add, "add"}}) {
+        QMenu* menu = m_window->menu(which);
+        menu->adjustSize();
+        menu->grab().save(QDir::tempPath() + QStringLiteral("/rl_editing_menu_%1.png").arg(QLatin1String(file)));
+    }
 }
 
 void TestEditing::releaseCostOnTheRampsScene() {

@@ -25,7 +25,7 @@ Q_DECLARE_METATYPE(rl::RigidDelta)
 
 namespace {
 
-// A grey floor anchor and two light grey boxes: no body shares the gizmo's red, green or blue.
+// A grey floor anchor and two yellow boxes: no body shares the gizmo's red, green or blue.
 rl::ViewportScene makeScene() {
     rl::ViewportScene scene;
     scene.meshes.push_back(rl::makeViewportBoxMesh(glm::vec3(5.0f, 0.25f, 5.0f)));
@@ -39,7 +39,7 @@ rl::ViewportScene makeScene() {
         rl::ViewportInstance box;
         box.meshIndex = 1;
         box.model = glm::translate(glm::mat4(1.0f), glm::vec3(-1.0f + 2.0f * i, 0.5f, 0.0f));
-        box.colour = glm::vec3(0.7f, 0.7f, 0.68f);
+        box.colour = glm::vec3(0.9f, 0.8f, 0.1f); // yellow: none of the gizmo's colours
         scene.instances.push_back(box);
     }
     return scene;
@@ -123,6 +123,7 @@ private slots:
     void rotateRingTurnsAboutItsAxis();
     void ctrlSnapsRotationsToFifteenDegrees();
     void escapeAndRightButtonCancel();
+    void previewIsDrawnWhileDragging();
     void hoverHighlightsTheHandle();
     void gizmoIsDrawnInTheAxisColours();
     void modalGrabFollowsTheMouse();
@@ -378,6 +379,30 @@ void TestGizmo::escapeAndRightButtonCancel() {
     sendMouse(m_viewport.get(), QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton);
     sendMouse(m_viewport.get(), QEvent::MouseButtonRelease, from, Qt::LeftButton, Qt::NoButton);
     QCOMPARE(finished.count(), 0);
+}
+
+void TestGizmo::previewIsDrawnWhileDragging() {
+    show();
+    m_viewport->setSelection({1});
+    m_viewport->setTool(rl::GizmoTool::Move);
+    auto isYellow = [](const QColor& c) { return c.red() > c.blue() + 60 && c.green() > c.blue() + 60; };
+    // A point on the box's front face, away from the gizmo's handles (which sit on the box centre's pixel).
+    const glm::vec3 face = translationOf(1) + glm::vec3(0.0f, -0.3f, 0.5f);
+    const QPointF before = pixelOf(m_viewport->camera(), glm::dvec3(face));
+    QVERIFY(isYellow(grab().pixelColor(before.toPoint())));
+    const QPointF from = *m_viewport->gizmoHandlePosition(rl::GizmoHandle::MoveY);
+    sendMouse(m_viewport.get(), QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton);
+    sendMouse(m_viewport.get(), QEvent::MouseMove, from + QPointF(0, -120), Qt::NoButton, Qt::LeftButton);
+    // Only the moved instance was re-uploaded; the frame shows it at its new place and not at the old one.
+    const QImage during = grab();
+    during.save(QDir::tempPath() + QStringLiteral("/rl_gizmo_drag.png"));
+    const glm::vec3 lifted = translationOf(1) + glm::vec3(0.0f, -0.3f, 0.5f);
+    QVERIFY(lifted.y > face.y + 0.5f);
+    QVERIFY(!isYellow(during.pixelColor(before.toPoint())));
+    QVERIFY(isYellow(during.pixelColor(pixelOf(m_viewport->camera(), glm::dvec3(lifted)).toPoint())));
+    QTest::keyClick(m_viewport.get(), Qt::Key_Escape);
+    QVERIFY(isYellow(grab().pixelColor(before.toPoint())));
+    sendMouse(m_viewport.get(), QEvent::MouseButtonRelease, from, Qt::LeftButton, Qt::NoButton);
 }
 
 void TestGizmo::hoverHighlightsTheHandle() {

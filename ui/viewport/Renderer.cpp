@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <unordered_set>
 
 // Q_INIT_RESOURCE must be used outside any namespace. It makes sure the shaders' resource is linked in even when
@@ -217,10 +218,14 @@ void Renderer::setInstanceTransforms(const ViewportScene& scene, std::span<const
         if (i < 0 || i >= static_cast<int>(m_slotOfInstance.size()) || i >= static_cast<int>(scene.instances.size()))
             continue;
         const int slot = m_slotOfInstance[i];
-        if (slot >= 0)
+        if (slot >= 0) {
             m_instances[slot].model = scene.instances[i].model;
+            m_partialFirst = std::min(m_partialFirst, slot);
+            m_partialLast = std::max(m_partialLast, slot);
+        }
     }
-    m_instancesDirty = true;
+    // Only these slots changed: unless a full upload is pending anyway, render() uploads just their range.
+    m_partialDirty = !m_instancesDirty;
     for (size_t k = 0; k < m_selectedSlots.size(); ++k)
         m_selected[k].model = m_instances[m_selectedSlots[k]].model;
     m_selectionDirty = m_selectionDirty || !m_selectedSlots.empty();
@@ -314,7 +319,19 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     if (m_instancesDirty) {
         uploadInstances(m_instanceBuffer, m_instanceBufferCapacity, m_instances);
         m_instancesDirty = false;
+    } else if (m_partialDirty && m_partialFirst <= m_partialLast &&
+               static_cast<size_t>(m_partialLast) < m_instances.size() &&
+               m_instanceBufferCapacity >= m_instances.size() * sizeof(InstanceData)) {
+        // A gizmo drag moves a few instances: a full 5,000-instance upload per frame would cost far more.
+        glBindBuffer(GL_ARRAY_BUFFER, m_instanceBuffer);
+        glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(m_partialFirst * sizeof(InstanceData)),
+                        static_cast<GLsizeiptr>((m_partialLast - m_partialFirst + 1) * sizeof(InstanceData)),
+                        m_instances.data() + m_partialFirst);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
     }
+    m_partialDirty = false;
+    m_partialFirst = std::numeric_limits<int>::max();
+    m_partialLast = -1;
     if (m_selectionDirty) {
         uploadInstances(m_selectionBuffer, m_selectionBufferCapacity, m_selected);
         m_selectionDirty = false;

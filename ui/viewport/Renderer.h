@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include <limits>
 #include <memory>
 #include <span>
 #include <vector>
@@ -109,6 +110,9 @@ private:
     std::vector<int> m_slotOfInstance;     // instance index -> position in m_instances, -1 when not drawn
     bool m_meshesDirty = false;
     bool m_instancesDirty = false;
+    bool m_partialDirty = false; // only slots m_partialFirst..m_partialLast changed (setInstanceTransforms)
+    int m_partialFirst = std::numeric_limits<int>::max();
+    int m_partialLast = -1;
     std::vector<InstanceData> m_selected; // copies of the selected instances, grouped by mesh, for the outline
     std::vector<int> m_selectedSlots;     // where each copy comes from in m_instances
     std::vector<SelectionRange> m_selectedRanges;

@@ -53,7 +53,7 @@ void angularVelocityPhase(BodyState& state, uint32_t i, Real dt, Real c, Integra
 
 // One body's velocity phase; the callers check that the step is valid and that the body moves.
 void velocityPhase(BodyState& state, uint32_t i, Real dt, const Vec3& gravity, const Damping& damping,
-                   Integrator integrator, bool rotationEnabled) {
+                   Integrator integrator, bool rotationEnabled, ClampCounters& clampCounters) {
     const auto gravityField = [&gravity](const Vec3&) { return gravity; };
     const Real c = damping.linear + state.linearDamping[i];
     translationVelocityPhase(integrator, state.position[i], state.linearVelocity[i], dt, c, gravityField,
@@ -63,7 +63,7 @@ void velocityPhase(BodyState& state, uint32_t i, Real dt, const Vec3& gravity, c
     // The clamp runs after the smooth update so that gravity cannot push a body past it; whatever it removes the
     // position phase treats like a solver change.
     Vec3 angular = rotationEnabled ? state.angularVelocity[i] : Vec3(0.0);
-    clampSpeeds(state.linearVelocity[i], angular, dt, state.limits, state.clampCounters);
+    clampSpeeds(state.linearVelocity[i], angular, dt, state.limits, clampCounters);
     if (rotationEnabled)
         state.angularVelocity[i] = angular;
 }
@@ -104,16 +104,17 @@ void integrateVelocities(BodyState& state, BodyRange range, Real dt, const Vec3&
     const uint32_t end = std::min(range.end, state.size());
     for (uint32_t i = range.begin; i < end; ++i)
         if (state.isMoving(i))
-            velocityPhase(state, i, dt, gravity, damping, integrator, rotationEnabled);
+            velocityPhase(state, i, dt, gravity, damping, integrator, rotationEnabled, state.clampCounters);
 }
 
 void integrateVelocities(BodyState& state, std::span<const uint32_t> bodies, Real dt, const Vec3& gravity,
-                         const Damping& damping, Integrator integrator, bool rotationEnabled) {
+                         const Damping& damping, Integrator integrator, bool rotationEnabled,
+                         ClampCounters& clampCounters) {
     if (!(dt > 0.0) || !std::isfinite(dt))
         return;
     for (uint32_t i : bodies)
         if (i < state.size() && state.isMoving(i))
-            velocityPhase(state, i, dt, gravity, damping, integrator, rotationEnabled);
+            velocityPhase(state, i, dt, gravity, damping, integrator, rotationEnabled, clampCounters);
 }
 
 void integratePositions(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,

@@ -80,10 +80,12 @@ void integrateVelocities(BodyState& state, BodyRange range, Real dt, const Vec3&
 void integratePositions(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,
                         Integrator integrator, bool rotationEnabled);
 
-// The same two phases for a list of body indices (the world's islands solved with their own substep count). Indices
-// that are out of range, asleep or static are skipped.
+// The same two phases for a list of body indices (the world's islands solved with their own substep count and on
+// their own threads). Indices that are out of range, asleep or static are skipped. The clamp is counted in
+// `clampCounters` instead of the state's, so that disjoint lists can run on several threads.
 void integrateVelocities(BodyState& state, std::span<const uint32_t> bodies, Real dt, const Vec3& gravity,
-                         const Damping& damping, Integrator integrator, bool rotationEnabled);
+                         const Damping& damping, Integrator integrator, bool rotationEnabled,
+                         ClampCounters& clampCounters);
 void integratePositions(BodyState& state, std::span<const uint32_t> bodies, Real dt, const Vec3& gravity,
                         const Damping& damping, Integrator integrator, bool rotationEnabled);
 

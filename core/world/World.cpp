@@ -420,8 +420,9 @@ void World::solve() {
         finest = std::max(finest, k);
     }
 
-    m_solver.resetCounters();
+    m_solverCounters = {};
     m_solverIndex.assign(n, 0);
+    m_chunkOf.assign(n, 0);
     for (int k = 1; k <= finest; ++k) {
         std::vector<uint32_t>& group = m_group;
         group.clear();
@@ -431,59 +432,124 @@ void World::solve() {
         if (!group.empty())
             solveGroup(group, k);
     }
-    const ContactSolverCounters& sc = m_solver.counters();
+    const ContactSolverCounters& sc = m_solverCounters;
     m_profile.count(Counter::NormalRows, sc.normalRows);
     m_profile.count(Counter::FrictionRows, sc.frictionRows);
     m_profile.count(Counter::RestitutionRows, sc.restitutionRows);
 }
 
 void World::solveGroup(std::span<const uint32_t> group, int refinement) {
-    const int substeps = m_substeps * refinement;
-    const Real dt = 1.0 / m_fps;
-    const Real h = dt / substeps;
-    const bool rotation = m_effects.effects.has(Effect::Rotation);
-
-    // Solver bodies: entry 0 stands for every immovable body (anchors and sleepers); the group's bodies follow.
-    std::vector<uint32_t>& solverIndex = m_solverIndex;
-    std::vector<SolverBody>& bodies = m_solverBodies;
-    std::vector<Vec3>& centers = m_solverCenters;
-    bodies.assign(group.size() + 1, SolverBody{});
-    centers.assign(group.size() + 1, Vec3(0.0));
-    for (size_t k = 0; k < group.size(); ++k) {
-        const uint32_t i = group[k];
-        solverIndex[i] = static_cast<uint32_t>(k + 1);
-        SolverBody& b = bodies[k + 1];
-        b.invMass = m_state.invMass[i];
-        // Linear-only mode: the solver must not spin bodies either.
-        b.invInertia = rotation ? m_state.worldInverseInertia(i) : Mat3(0.0);
-        centers[k + 1] = m_state.position[i];
+    // Islands share no moving body (the static entry 0 of each chunk never changes), so splitting a group's islands
+    // over chunks and solving each chunk on its own thread gives bit-identical results for any thread count: every
+    // constraint sees the same operations in the same order on the same bodies.
+    const int wanted = group.size() >= kMinBodiesPerThread ? m_threads : 1;
+    const int chunkCount =
+        std::max(1, std::min<int>(wanted, static_cast<int>(group.size() / (kMinBodiesPerThread / 2))));
+    if (static_cast<int>(m_chunks.size()) < chunkCount)
+        m_chunks.resize(static_cast<size_t>(chunkCount));
+    for (int k = 0; k < chunkCount; ++k)
+        m_chunks[k].bodies.clear();
+    if (chunkCount == 1) {
+        m_chunks[0].bodies.assign(group.begin(), group.end());
+    } else {
+        // Whole islands go to the chunk with the fewest bodies so far, in body order: deterministic, and balanced
+        // enough when there are many islands. (One big island stays on one thread.)
+        m_islandChunk.assign(m_state.size(), -1);
+        m_islandSize.assign(m_state.size(), 0);
+        for (uint32_t i : group)
+            ++m_islandSize[m_island[i]];
+        std::vector<size_t> load(static_cast<size_t>(chunkCount), 0);
+        for (uint32_t i : group) {
+            const uint32_t root = m_island[i];
+            if (m_islandChunk[root] < 0) {
+                const auto lightest = std::min_element(load.begin(), load.end()) - load.begin();
+                m_islandChunk[root] = static_cast<int32_t>(lightest);
+                load[static_cast<size_t>(lightest)] += m_islandSize[root];
+            }
+            m_chunks[static_cast<size_t>(m_islandChunk[root])].bodies.push_back(i);
+        }
     }
-    const auto inGroup = [&](uint32_t body) { return m_state.isMoving(body) && m_refinement[body] == refinement; };
+    for (int k = 0; k < chunkCount; ++k)
+        for (uint32_t i : m_chunks[k].bodies)
+            m_chunkOf[i] = static_cast<uint8_t>(k);
 
-    // Contacts the solver sees: touching manifolds with a body of this group. (Two moving bodies that touch share
-    // an island, so a contact never straddles two groups.)
-    std::vector<uint32_t>& activeContacts = m_activeContacts;
-    std::vector<Manifold>& manifolds = m_solverManifolds;
-    std::vector<uint32_t>& indexA = m_solverIndexA;
-    std::vector<uint32_t>& indexB = m_solverIndexB;
-    std::vector<Real>& friction = m_solverFriction;
-    std::vector<Real>& restitution = m_solverRestitution;
+    // Contacts go to the chunk of their moving body. (Two moving bodies that touch share an island, so a contact
+    // never straddles two groups or two chunks.)
+    const auto inGroup = [&](uint32_t body) { return m_state.isMoving(body) && m_refinement[body] == refinement; };
+    for (int k = 0; k < chunkCount; ++k)
+        m_chunks[k].clearContacts();
+    for (uint32_t c = 0; c < m_contacts.size(); ++c) {
+        const Contact& contact = m_contacts[c];
+        if (contact.manifold.pointCount == 0)
+            continue;
+        const bool a = inGroup(contact.bodyA), b = inGroup(contact.bodyB);
+        if (!a && !b)
+            continue;
+        m_chunks[m_chunkOf[a ? contact.bodyA : contact.bodyB]].activeContacts.push_back(c);
+    }
+
+    const int substeps = m_substeps * refinement;
+    if (chunkCount == 1) {
+        solveChunk(m_chunks[0], substeps, true);
+    } else {
+        StageTimer t(m_profile, Stage::Solve); // the per-stage timers are not thread safe: the whole solve counts here
+        std::vector<std::thread> workers;
+        for (int k = 1; k < chunkCount; ++k)
+            workers.emplace_back([this, k, substeps] { solveChunk(m_chunks[k], substeps, false); });
+        solveChunk(m_chunks[0], substeps, false);
+        for (std::thread& worker : workers)
+            worker.join();
+    }
+    for (int k = 0; k < chunkCount; ++k) {
+        SolveChunk& chunk = m_chunks[k];
+        const ContactSolverCounters& sc = chunk.solver.counters();
+        m_solverCounters.normalRows += sc.normalRows;
+        m_solverCounters.frictionRows += sc.frictionRows;
+        m_solverCounters.restitutionRows += sc.restitutionRows;
+        m_state.clampCounters.linear += chunk.clamps.linear;
+        m_state.clampCounters.angular += chunk.clamps.angular;
+        chunk.clamps = {};
+    }
+    m_profile.count(Counter::IntegratedBodies, group.size() * static_cast<uint64_t>(substeps));
+}
+
+void World::SolveChunk::clearContacts() {
     activeContacts.clear();
     manifolds.clear();
     indexA.clear();
     indexB.clear();
     friction.clear();
     restitution.clear();
-    for (uint32_t k = 0; k < m_contacts.size(); ++k) {
-        const Contact& c = m_contacts[k];
-        if (c.manifold.pointCount == 0 || (!inGroup(c.bodyA) && !inGroup(c.bodyB)))
-            continue;
-        activeContacts.push_back(k);
-        manifolds.push_back(c.manifold);
-        indexA.push_back(inGroup(c.bodyA) ? solverIndex[c.bodyA] : 0u);
-        indexB.push_back(inGroup(c.bodyB) ? solverIndex[c.bodyB] : 0u);
-        friction.push_back(c.friction);
-        restitution.push_back(c.restitution);
+}
+
+void World::solveChunk(SolveChunk& chunk, int substeps, bool timed) {
+    const Real dt = 1.0 / m_fps;
+    const Real h = dt / substeps;
+    const bool rotation = m_effects.effects.has(Effect::Rotation);
+    const std::vector<uint32_t>& group = chunk.bodies;
+
+    // Solver bodies: entry 0 stands for every immovable body (anchors and sleepers); the chunk's bodies follow.
+    // A body's solver index is written only by its own chunk.
+    std::vector<SolverBody>& bodies = chunk.solverBodies;
+    bodies.assign(group.size() + 1, SolverBody{});
+    chunk.centers.assign(group.size() + 1, Vec3(0.0));
+    for (size_t k = 0; k < group.size(); ++k) {
+        const uint32_t i = group[k];
+        m_solverIndex[i] = static_cast<uint32_t>(k + 1);
+        SolverBody& b = bodies[k + 1];
+        b.invMass = m_state.invMass[i];
+        // Linear-only mode: the solver must not spin bodies either.
+        b.invInertia = rotation ? m_state.worldInverseInertia(i) : Mat3(0.0);
+        chunk.centers[k + 1] = m_state.position[i];
+    }
+    for (uint32_t c : chunk.activeContacts) {
+        const Contact& contact = m_contacts[c];
+        chunk.manifolds.push_back(contact.manifold);
+        // Sleepers and anchors have solver index 0; so does a moving body of another group, which cannot touch.
+        chunk.indexA.push_back(m_solverIndex[contact.bodyA]);
+        chunk.indexB.push_back(m_solverIndex[contact.bodyB]);
+        chunk.friction.push_back(contact.friction);
+        chunk.restitution.push_back(contact.restitution);
     }
     auto toSolver = [&] {
         for (size_t k = 0; k < group.size(); ++k) {
@@ -491,12 +557,6 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
             bodies[k + 1].w = rotation ? m_state.angularVelocity[group[k]] : Vec3(0.0);
         }
     };
-    // prepare() records each point's approach speed for restitution, so it must see the current velocities.
-    toSolver();
-    ContactSolverSettings settings = m_solverSettings;
-    settings.contactHertz = 0.25 * m_fps * substeps; // a quarter of the substep rate (see ContactSolverSettings)
-    m_solver.prepare(manifolds, indexA, indexB, friction, restitution, bodies, centers, h, settings);
-
     auto fromSolver = [&] {
         for (size_t k = 0; k < group.size(); ++k) {
             m_state.linearVelocity[group[k]] = bodies[k + 1].v;
@@ -504,25 +564,39 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
                 m_state.angularVelocity[group[k]] = bodies[k + 1].w;
         }
     };
+    // Stage timers only on the world's own thread (Profile is not thread safe).
+    std::optional<StageTimer> t;
+    auto timer = [&](Stage stage) {
+        t.reset();
+        if (timed)
+            t.emplace(m_profile, stage);
+    };
+
+    // prepare() records each point's approach speed for restitution, so it must see the current velocities.
+    toSolver();
+    ContactSolverSettings settings = m_solverSettings;
+    settings.contactHertz = 0.25 * m_fps * substeps; // a quarter of the substep rate (see ContactSolverSettings)
+    chunk.solver.resetCounters();
+    chunk.solver.prepare(chunk.manifolds, chunk.indexA, chunk.indexB, chunk.friction, chunk.restitution, bodies,
+                         chunk.centers, h, settings);
     for (int s = 0; s < substeps; ++s) {
         {
-            StageTimer t(m_profile, Stage::IntegrateVelocities);
-            integrateVelocities(m_state, group, h, m_gravity, m_damping, m_integrator, rotation);
-            m_profile.count(Counter::IntegratedBodies, group.size());
+            timer(Stage::IntegrateVelocities);
+            integrateVelocities(m_state, group, h, m_gravity, m_damping, m_integrator, rotation, chunk.clamps);
         }
         toSolver();
         {
-            StageTimer t(m_profile, Stage::WarmStart);
-            m_solver.warmStart(bodies);
+            timer(Stage::WarmStart);
+            chunk.solver.warmStart(bodies);
         }
         {
-            StageTimer t(m_profile, Stage::Solve);
+            timer(Stage::Solve);
             for (int it = 0; it < m_iterations; ++it)
-                m_solver.solve(bodies, true);
+                chunk.solver.solve(bodies, true);
         }
         fromSolver();
         {
-            StageTimer t(m_profile, Stage::IntegratePositions);
+            timer(Stage::IntegratePositions);
             integratePositions(m_state, group, h, m_gravity, m_damping, m_integrator, rotation);
             for (size_t k = 0; k < group.size(); ++k) {
                 const uint32_t i = group[k];
@@ -532,23 +606,25 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
         }
         toSolver();
         {
-            StageTimer t(m_profile, Stage::Relax);
+            timer(Stage::Relax);
             for (int it = 0; it < m_tuning.relaxIterations; ++it)
-                m_solver.solve(bodies, false);
+                chunk.solver.solve(bodies, false);
         }
         fromSolver();
+        t.reset();
     }
     if (m_solverSettings.restitution) {
-        StageTimer t(m_profile, Stage::Restitution);
+        timer(Stage::Restitution);
         toSolver();
-        m_solver.applyRestitution(bodies);
+        chunk.solver.applyRestitution(bodies);
         fromSolver();
+        t.reset();
     }
-    m_solver.storeImpulses(manifolds);
-    for (size_t k = 0; k < activeContacts.size(); ++k)
-        m_contacts[activeContacts[k]].manifold = manifolds[k];
+    chunk.solver.storeImpulses(chunk.manifolds);
+    for (size_t k = 0; k < chunk.activeContacts.size(); ++k)
+        m_contacts[chunk.activeContacts[k]].manifold = chunk.manifolds[k];
     for (uint32_t i : group)
-        solverIndex[i] = 0;
+        m_solverIndex[i] = 0;
 }
 
 void World::continuousCollision() {

@@ -27,7 +27,7 @@ struct WorldOptions {
     std::optional<int> iterations;
     std::optional<Integrator> integrator;
     std::optional<EffectsSetting> effects;
-    int threads = 1; // worker threads for the narrowphase; results are identical for any count
+    int threads = 1; // worker threads for the narrowphase and the islands' solve; results are identical for any count
 };
 
 // Tuning constants of the contact pipeline, with where they come from.
@@ -135,6 +135,21 @@ private:
     void buildIslands();
     void solve();
     void solveGroup(std::span<const uint32_t> group, int refinement);
+    // One thread's share of a group: whole islands, with their own solver and scratch.
+    struct SolveChunk {
+        std::vector<uint32_t> bodies;
+        ContactSolver solver;
+        std::vector<SolverBody> solverBodies;
+        std::vector<Vec3> centers;
+        std::vector<uint32_t> activeContacts, indexA, indexB;
+        std::vector<Manifold> manifolds;
+        std::vector<Real> friction, restitution;
+        ClampCounters clamps;
+        void clearContacts();
+    };
+    void solveChunk(SolveChunk& chunk, int substeps, bool timed);
+    // A group is split over threads only from this many bodies on (and at half of it per chunk).
+    static constexpr size_t kMinBodiesPerThread = 128;
     int substepRefinement(Real massRatio) const;
     void continuousCollision();
     void updateSleep();
@@ -169,7 +184,6 @@ private:
     BroadPhase m_broadPhase;
     std::vector<Contact> m_contacts; // in broadphase pair order
     std::vector<uint32_t> m_island;  // island root per body (union-find), recomputed every step
-    ContactSolver m_solver;
     // Shape-to-world transform per body, taken once at the start of the step: the broadphase and every pair of
     // the narrowphase need it, and each mat3_cast costs more than the lookup.
     std::vector<Transform> m_transforms;
@@ -178,11 +192,12 @@ private:
     std::vector<uint32_t> m_group;
     std::vector<uint8_t> m_refinement; // per body: its island's substep multiplier this step, 0 when not moving
     std::vector<Real> m_islandMinMass, m_islandMaxMass;
-    std::vector<uint32_t> m_narrowActive, m_solverIndex, m_moving, m_activeContacts, m_solverIndexA, m_solverIndexB;
-    std::vector<SolverBody> m_solverBodies;
-    std::vector<Vec3> m_solverCenters;
-    std::vector<Manifold> m_solverManifolds;
-    std::vector<Real> m_solverFriction, m_solverRestitution;
+    std::vector<uint32_t> m_narrowActive, m_solverIndex, m_moving;
+    std::vector<SolveChunk> m_chunks;   // one per thread of the solve
+    std::vector<uint8_t> m_chunkOf;     // per body: its chunk in the current group
+    std::vector<int32_t> m_islandChunk; // per island root: its chunk, -1 before it is assigned
+    std::vector<size_t> m_islandSize;   // per island root: moving bodies in the current group
+    ContactSolverCounters m_solverCounters;
     std::vector<Vec3> m_stepStartPosition;
     std::vector<Quat> m_stepStartOrientation;
 

@@ -21,6 +21,7 @@ namespace {
 // while it is small, then goes thin, then thin and aliased.
 constexpr int kStyledLineLimit = 600;
 constexpr int kAntialiasLineLimit = 4000;
+constexpr size_t kSmallDotsAbove = 500;
 constexpr int kTrailFadeSteps = 4; // trails fade from old to new in this many alpha steps (one drawLines each)
 
 bool isThin(const std::vector<QLineF>& lines) {
@@ -40,13 +41,14 @@ void drawBatch(QPainter& painter, const std::vector<QLineF>& lines, QPen pen, Ov
     stats.lines += static_cast<int>(lines.size());
 }
 
-// A contact dot (dark rim, coloured disc) rendered once per device pixel ratio: blitting it is far cheaper than
-// stroking a wide round-capped point per contact (measured: 2,784 contacts took 75 ms of CPU with round points).
-const QImage& contactDot(qreal ratio) {
-    static QImage sprite;
-    if (sprite.isNull() || sprite.devicePixelRatio() != ratio) {
-        const double logical = kContactDotPixels + 3.0;
-        const int side = static_cast<int>(std::ceil(logical * ratio));
+// A contact dot (dark rim, coloured disc) rendered once per size and device pixel ratio: blitting it is far cheaper
+// than stroking a wide round-capped point per contact (measured: 2,784 contacts took 75 ms of CPU with round points).
+const QImage& contactDot(qreal ratio, double diameter) {
+    static QImage sprites[2];
+    QImage& sprite = sprites[diameter < kContactDotPixels ? 1 : 0];
+    const double logical = diameter + 3.0;
+    const int side = static_cast<int>(std::ceil(logical * ratio));
+    if (sprite.isNull() || sprite.devicePixelRatio() != ratio || sprite.width() != side) {
         sprite = QImage(side, side, QImage::Format_ARGB32_Premultiplied);
         sprite.setDevicePixelRatio(ratio);
         sprite.fill(Qt::transparent);
@@ -57,7 +59,7 @@ const QImage& contactDot(qreal ratio) {
         p.setBrush(overlay_colours::outline());
         p.drawEllipse(centre, logical / 2.0, logical / 2.0);
         p.setBrush(overlay_colours::contact());
-        p.drawEllipse(centre, kContactDotPixels / 2.0, kContactDotPixels / 2.0);
+        p.drawEllipse(centre, diameter / 2.0, diameter / 2.0);
     }
     return sprite;
 }
@@ -285,7 +287,9 @@ OverlayPaintStats paintOverlays(QPainter& painter, const Camera& camera, const Q
             }
             drawBatch(painter, lines, QPen(overlay_colours::normal(), 1.5, Qt::SolidLine, Qt::RoundCap), stats);
             if (!dots.empty()) {
-                const QImage& dot = contactDot(painter.device() ? painter.device()->devicePixelRatio() : 1.0);
+                // Piles have thousands of contacts: smaller dots keep the bodies under them visible.
+                const double diameter = dots.size() > kSmallDotsAbove ? kContactDotPixels - 2.0 : kContactDotPixels;
+                const QImage& dot = contactDot(painter.device() ? painter.device()->devicePixelRatio() : 1.0, diameter);
                 const double half = dot.width() / dot.devicePixelRatio() / 2.0;
                 for (const QPointF& p : dots)
                     painter.drawImage(QPointF(p.x() - half, p.y() - half), dot);

@@ -1,5 +1,6 @@
-// The editor's 3D viewport widget: draws a ViewportScene with the instanced Renderer and drives an orbit Camera
-// with Blender's mouse and keys. It reports picks and box selections; the owner decides what is selected.
+// The editor's 3D viewport widget: draws a ViewportScene with the instanced Renderer, drives an orbit Camera with
+// Blender's mouse and keys, and hosts the move/rotate gizmo. It reports picks, box selections and finished
+// transforms; the owner decides what is selected and turns a transform into an undo step.
 #pragma once
 
 #include "viewport/Camera.h"

@@ -4,8 +4,8 @@
 
 #include "MainWindow.h"
 #include "bake/Bake.h"
-#include "overlays/OverlayController.h"
 #include "document/SceneDocument.h"
+#include "overlays/OverlayController.h"
 #include "scene/BodyProperties.h"
 #include "simulation/SimulationController.h"
 #include "viewport/ScenePresenter.h"

@@ -24,6 +24,8 @@
 #include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
+#include <QPainter>
+#include <QPixmap>
 #include <QProgressBar>
 #include <QStatusBar>
 #include <QStyle>
@@ -65,6 +67,24 @@ Scene markerScene(const Bake& bake) {
         scene.bodies.push_back(std::move(body));
     }
     return scene;
+}
+
+// Bake records the run: the red dot of a record button (the style's icons have none, and its save icon is File >
+// Save's).
+QIcon recordIcon() {
+    QIcon icon;
+    for (int size : {16, 24, 32}) {
+        QPixmap pixmap(size, size);
+        pixmap.fill(Qt::transparent);
+        QPainter painter(&pixmap);
+        painter.setRenderHint(QPainter::Antialiasing);
+        painter.setPen(QPen(QColor(140, 20, 20), size / 16.0));
+        painter.setBrush(QColor(215, 45, 40));
+        const qreal margin = size * 0.2;
+        painter.drawEllipse(QRectF(margin, margin, size - 2 * margin, size - 2 * margin));
+        icon.addPixmap(pixmap);
+    }
+    return icon;
 }
 
 } // namespace
@@ -163,7 +183,7 @@ void SimulationController::createActions() {
     m_resetAction->setStatusTip(tr("Back to the edit pose (frame 0)"));
     connect(m_resetAction, &QAction::triggered, this, &SimulationController::reset);
 
-    m_bakeAction = new QAction(style->standardIcon(QStyle::SP_DialogSaveButton), tr("&Bake…"), this);
+    m_bakeAction = new QAction(recordIcon(), tr("&Bake…"), this);
     m_bakeAction->setObjectName("BakeAction");
     m_bakeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
     m_bakeAction->setStatusTip(tr("Record the simulation in the background for playback and export"));
@@ -244,14 +264,14 @@ void SimulationController::updateStatusLabel() {
         text = tr("edit pose");
         break;
     case Display::Live:
-        text = tr("live · t = %1 s · frame %2 · %3 steps/s")
+        text = tr("live · %1 s · frame %2 · %3 steps/s")
                    .arg(m_shownLive.time, 0, 'f', 2)
                    .arg(m_shownLive.frame)
                    .arg(std::lround(m_shownLive.stepsPerSecond));
         break;
     case Display::Baked: {
         const int frame = m_timeline->currentFrame();
-        text = tr("bake · t = %1 s · frame %2 of %3")
+        text = tr("bake · %1 s · frame %2/%3")
                    .arg(m_bake ? m_bake->frameTime(static_cast<size_t>(std::max(frame, 0))) : 0.0, 0, 'f', 2)
                    .arg(frame)
                    .arg(m_bake ? static_cast<qint64>(m_bake->frameCount()) - 1 : 0);

@@ -105,6 +105,7 @@ private slots:
     void outlinerAnchorColumnToggles();
     void selectionShortcuts();
     void shiftAOpensTheAddMenu();
+    void gAndRStartModalTransforms();
     void statusBarShowsCountsSelectionAndFrameTime();
     void windowScreenshotWithGizmo();
     void releaseCostOnTheRampsScene();
@@ -498,6 +499,31 @@ void TestEditing::shiftAOpensTheAddMenu() {
     QTRY_VERIFY(add->isVisible());
     add->close();
     QCOMPARE(document()->bodyCount(), 3);
+}
+
+void TestEditing::gAndRStartModalTransforms() {
+    const rl::Scene original = document()->scene();
+    m_window->setSelectedBodies({2});
+    QCursor::setPos(viewport()->mapToGlobal(QPoint(viewport()->width() / 2, viewport()->height() / 2)));
+    viewport()->setFocus();
+    QTRY_VERIFY(viewport()->hasFocus());
+    QTest::keyClick(viewport(), Qt::Key_G);
+    QVERIFY(viewport()->isTransforming());
+    QTest::keyClick(viewport(), Qt::Key_Escape);
+    QVERIFY(!viewport()->isTransforming());
+    QTest::keyClick(viewport(), Qt::Key_R);
+    QVERIFY(viewport()->isTransforming());
+    const QPointF start = viewport()->mapFromGlobal(QCursor::pos());
+    sendMouse(viewport(), QEvent::MouseMove, start + QPointF(-30, 70), Qt::NoButton, Qt::NoButton);
+    QTest::keyClick(viewport(), Qt::Key_Return); // Enter confirms, as a click does
+    QVERIFY(!viewport()->isTransforming());
+    QCOMPARE(document()->undoStack()->count(), 1);
+    QVERIFY(document()->body(2).orientation != original.bodies[2].orientation);
+    QVERIFY(document()->undoStack()->undoText().startsWith(QStringLiteral("Rotate")));
+    // Without a selection G does nothing.
+    m_window->setSelectedBodies({});
+    QTest::keyClick(viewport(), Qt::Key_G);
+    QVERIFY(!viewport()->isTransforming());
 }
 
 void TestEditing::statusBarShowsCountsSelectionAndFrameTime() {

@@ -526,7 +526,6 @@ void Viewport::previewTransform(const QPointF& mouse, bool snap) {
     if (!isTransforming())
         return;
     m_modalLastMouse = mouse;
-    const glm::vec3 before = m_gizmo.centre();
     m_transformDelta = m_gizmo.dragTo(m_camera, mouse, snap);
     // Only the moved instances change; the renderer re-uploads its instance buffer once, in paintGL.
     const glm::mat4 motion = m_transformDelta.matrix();
@@ -536,7 +535,6 @@ void Viewport::previewTransform(const QPointF& mouse, bool snap) {
     // The gizmo follows a move; a rotation turns about a fixed centre.
     const glm::vec3 pivot(m_transformDelta.pivot);
     m_selectionCentre = pivot + glm::vec3(m_transformDelta.translation);
-    Q_UNUSED(before);
     update();
 }
 

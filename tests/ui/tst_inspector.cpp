@@ -3,6 +3,8 @@
 #include "MainWindow.h"
 #include "document/SceneDocument.h"
 #include "inspector/InspectorWidget.h"
+#include "scene/BodyProperties.h"
+#include "scene/SceneLibrary.h"
 #include "ui/GuiTestSetup.h"
 #include "viewport/Viewport.h"
 
@@ -201,6 +203,168 @@ private slots:
         QCOMPARE(document->body(2).name, std::string("Cube.001"));
         QCOMPARE(document->body(3).name, std::string("Cube.002"));
         QVERIFY(name->text().isEmpty()); // mixed again
+    }
+
+    void densityAndMassOverrides() {
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        rl::SceneDocument* document = window.document();
+        window.setSelectedBodies({1});
+        const rl::BodyDef before = document->body(1);
+        const auto props = rl::computeBodyProperties(document->scene(), before);
+        QVERIFY(props);
+        auto* massLabel = child<QLabel>(window, "InspectorComputedMass");
+        QCOMPARE(massLabel->text(), QStringLiteral("%1 kg").arg(props->mass, 0, 'g', 5));
+        QCOMPARE(child<QLabel>(window, "InspectorVolume")->text(),
+                 QStringLiteral("%1 m³").arg(props->volume, 0, 'g', 5));
+
+        // Density: the box starts from the material's value, and the computed mass follows.
+        auto* densityOn = child<QCheckBox>(window, "InspectorDensityEnabled");
+        auto* density = child<QDoubleSpinBox>(window, "InspectorDensity");
+        QCOMPARE(density->value(), 700.0); // wood
+        densityOn->click();
+        QCOMPARE(*document->body(1).density, 700.0);
+        density->setValue(1400.0);
+        QCOMPARE(*document->body(1).density, 1400.0);
+        QCOMPARE(massLabel->text(), QStringLiteral("%1 kg").arg(2.0 * props->mass, 0, 'g', 5));
+
+        // Mass: overrides density x volume.
+        auto* massOn = child<QCheckBox>(window, "InspectorMassEnabled");
+        auto* mass = child<QDoubleSpinBox>(window, "InspectorMass");
+        massOn->click();
+        QVERIFY(document->body(1).mass.has_value());
+        mass->setValue(5.0);
+        QCOMPARE(*document->body(1).mass, 5.0);
+        QCOMPARE(massLabel->text(), QStringLiteral("5 kg"));
+        QCOMPARE(document->undoStack()->count(), 4);
+        while (document->undoStack()->canUndo())
+            document->undoStack()->undo();
+        QVERIFY(document->body(1) == before);
+        QVERIFY(!density->isEnabled() && !mass->isEnabled());
+    }
+
+    void restitutionAndInitialMotion_data() {
+        QTest::addColumn<QString>("field");
+        QTest::addColumn<double>("value");
+        QTest::newRow("velocity x") << "InspectorVelocityX" << 1.5;
+        QTest::newRow("velocity y") << "InspectorVelocityY" << -2.0;
+        QTest::newRow("velocity z") << "InspectorVelocityZ" << 0.25;
+        QTest::newRow("angular velocity x") << "InspectorAngularVelocityX" << 3.0;
+        QTest::newRow("angular velocity y") << "InspectorAngularVelocityY" << -1.0;
+        QTest::newRow("angular velocity z") << "InspectorAngularVelocityZ" << 0.5;
+        QTest::newRow("position x") << "InspectorPositionX" << 2.0;
+        QTest::newRow("rotation x (degrees)") << "InspectorRotationX" << 30.0;
+    }
+    void restitutionAndInitialMotion() {
+        QFETCH(QString, field);
+        QFETCH(double, value);
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        rl::SceneDocument* document = window.document();
+        window.setSelectedBodies({2});
+        const rl::BodyDef before = document->body(2);
+        auto* box = window.inspector()->findChild<QDoubleSpinBox*>(field);
+        QVERIFY(box);
+        box->setValue(value);
+        QCOMPARE(document->undoStack()->count(), 1);
+        const rl::BodyDef& after = document->body(2);
+        const int axis = field.back().toLatin1() - 'X';
+        if (field.startsWith("InspectorVelocity"))
+            QCOMPARE(after.velocity[axis], value);
+        else if (field.startsWith("InspectorAngularVelocity"))
+            QCOMPARE(after.angularVelocity[axis], value);
+        else if (field.startsWith("InspectorPosition"))
+            QCOMPARE(after.position[axis], value);
+        else
+            QVERIFY(std::abs(glm::degrees(glm::eulerAngles(after.orientation))[axis] - value) < 1e-9);
+        // Arrow steps of the same field merge into the same undo step.
+        box->stepUp();
+        box->stepUp();
+        QCOMPARE(document->undoStack()->count(), 1);
+        document->undoStack()->undo();
+        QVERIFY(document->body(2) == before);
+
+        // Restitution override, as the other overrides.
+        child<QCheckBox>(window, "InspectorRestitutionEnabled")->click();
+        child<QDoubleSpinBox>(window, "InspectorRestitution")->setValue(0.6);
+        QCOMPARE(*document->body(2).restitution, 0.6);
+        QCOMPARE(document->scene().effectiveMaterial(document->body(2)).restitution, 0.6);
+    }
+
+    void overrideOutOfRangeRefused_data() {
+        QTest::addColumn<QString>("field");
+        QTest::addColumn<double>("value");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("density 0") << "InspectorDensity" << 0.0 << "Density";
+        QTest::newRow("density negative") << "InspectorDensity" << -0.5 << "Density";
+        QTest::newRow("mass 0") << "InspectorMass" << 0.0 << "Mass";
+        QTest::newRow("friction negative") << "InspectorFriction" << -0.2 << "Friction";
+        QTest::newRow("restitution negative") << "InspectorRestitution" << -0.2 << "Restitution";
+    }
+    void overrideOutOfRangeRefused() {
+        QFETCH(QString, field);
+        QFETCH(double, value);
+        QFETCH(QString, expected);
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        rl::SceneDocument* document = window.document();
+        window.setSelectedBodies({3});
+        child<QCheckBox>(window, (field + "Enabled").toLatin1().constData())->click();
+        const rl::BodyDef before = document->body(3);
+        const int steps = document->undoStack()->count();
+        auto* box = window.inspector()->findChild<QDoubleSpinBox*>(field);
+        const double shown = box->value();
+        box->setValue(value);
+        QVERIFY(document->body(3) == before);
+        QCOMPARE(document->undoStack()->count(), steps);
+        QCOMPARE(box->value(), shown);
+        QVERIFY2(window.inspector()->message().contains(expected), qPrintable(window.inspector()->message()));
+        // The same material with a value in range is accepted, and the refusal goes away.
+        box->setValue(0.5);
+        QVERIFY(window.inspector()->message().isEmpty());
+        QVERIFY(!(document->body(3) == before));
+    }
+
+    void multiSelectionOverrideAppliesToAll() {
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        rl::SceneDocument* document = window.document();
+        window.setSelectedBodies({1, 2, 3});
+        auto* enabled = child<QCheckBox>(window, "InspectorFrictionEnabled");
+        auto* value = child<QDoubleSpinBox>(window, "InspectorFriction");
+        enabled->click();
+        value->setValue(0.3);
+        for (int body : {1, 2, 3})
+            QCOMPARE(*document->body(body).friction, 0.3);
+        QCOMPARE(document->undoStack()->count(), 2);
+        // One body differs: the selection shows the value as mixed, and the check box stays checked.
+        window.setSelectedBodies({2});
+        value->setValue(0.9);
+        window.setSelectedBodies({1, 2, 3});
+        QCOMPARE(value->text(), rl::InspectorWidget::mixedText());
+        QCOMPARE(enabled->checkState(), Qt::Checked);
+        // Some bodies with the override and some without: partially checked.
+        window.setSelectedBodies({3, 4});
+        QCOMPARE(enabled->checkState(), Qt::PartiallyChecked);
+        QCOMPARE(child<QLabel>(window, "InspectorInertia")->text(), rl::InspectorWidget::mixedText());
+        QVERIFY(child<QLabel>(window, "InspectorComputedMass")->text().contains("total"));
+    }
+
+    void materialNamesIgnoreCase() {
+        rl::Scene scene = rl::scenes::stack(2);
+        scene.bodies[1].material = "wood";
+        scene.bodies[2].material = "Wood";
+        rl::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.document()->reset(scene, QString());
+        window.setSelectedBodies({1, 2});
+        auto* material = child<QComboBox>(window, "InspectorMaterial");
+        QCOMPARE(material->currentText(), QStringLiteral("Wood"));
+        QCOMPARE(material->findText("wood", Qt::MatchFixedString | Qt::MatchCaseSensitive), -1); // listed once
+        // The list is the library's order: the presets first.
+        QCOMPARE(material->itemText(0), QStringLiteral("Default"));
+        QCOMPARE(material->count(), static_cast<int>(rl::materialPresets().size()));
     }
 
     void screenshot() {

@@ -286,7 +286,8 @@ private slots:
         mode->setCurrentIndex(static_cast<int>(EffectMode::On));
         emit mode->activated(static_cast<int>(EffectMode::On));
         QTRY_VERIFY_WITH_TIMEOUT(status(window, "friction").contains("forced"), 20000);
-        QTRY_VERIFY_WITH_TIMEOUT(status(window, "friction").contains("Auto would be off"), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(status(window, "friction").contains("Auto: off"), 20000);
+        QVERIFY(child<QLabel>(world, "EffectStatus_friction")->toolTip().contains("friction is zero"));
         QVERIFY(status(window, "friction").contains(">on<"));
         // Undo goes back to Auto and off.
         window.document()->undoStack()->undo();
@@ -319,9 +320,11 @@ private slots:
         auto* ccd = child<QComboBox>(world, "EffectMode_sleeping");
         ccd->setCurrentIndex(2);
         emit ccd->activated(2);
-        QTRY_VERIFY_WITH_TIMEOUT(status(window, "sleeping").contains("Auto would"), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(status(window, "sleeping").contains("Auto: on"), 20000);
         QVERIFY(window.grab().save(QDir::tempPath() + "/rigidlab-world.png"));
         QVERIFY(window.settings()->worldDock()->grab().save(QDir::tempPath() + "/rigidlab-world-dock.png"));
+        QVERIFY(
+            child<QWidget>(world, "WorldSettingsContent")->grab().save(QDir::tempPath() + "/rigidlab-world-all.png"));
     }
 };
 

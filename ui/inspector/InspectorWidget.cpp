@@ -4,7 +4,9 @@
 #include "document/UndoIds.h"
 #include "document/commands/SetBodiesCommand.h"
 #include "document/commands/SetBodyCommand.h"
+#include "materials/MaterialLibrary.h"
 #include "scene/BodyProperties.h"
+#include "settings/MessageBar.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -60,6 +62,10 @@ QString InspectorWidget::mixedText() {
     return QStringLiteral("\u2014");
 }
 
+QString InspectorWidget::message() const {
+    return m_message->text();
+}
+
 InspectorWidget::InspectorWidget(SceneDocument* document, QWidget* parent) : QWidget(parent), m_document(document) {
     setObjectName("Inspector");
     auto* outer = new QVBoxLayout(this);
@@ -68,6 +74,9 @@ InspectorWidget::InspectorWidget(SceneDocument* document, QWidget* parent) : QWi
     m_emptyLabel->setAlignment(Qt::AlignCenter);
     m_emptyLabel->setWordWrap(true);
     outer->addWidget(m_emptyLabel);
+    m_message = new MessageBar(this);
+    m_message->setObjectName("InspectorMessage");
+    outer->addWidget(m_message);
 
     auto* scroll = new QScrollArea(this);
     m_scroll = scroll;
@@ -118,16 +127,19 @@ InspectorWidget::InspectorWidget(SceneDocument* document, QWidget* parent) : QWi
 
     // Material overrides
     QFormLayout* overrides = makeSection(tr("Overrides"));
-    m_density = makeOverride("InspectorDensity", 1e6, 1, 10.0, tr(" kg/m³"), tr("Set Density"), SetBodyDensityId,
-                             &BodyDef::density);
+    m_density = makeOverride("InspectorDensity", MaterialLibrary::kMaxDensity, 1, 10.0, tr(" kg/m³"), tr("Set Density"),
+                             SetBodyDensityId, &BodyDef::density, tr("Density must be above 0 kg/m³."), false);
     overrides->addRow(m_density.enabled, m_density.value);
-    m_mass = makeOverride("InspectorMass", 1e9, 3, 0.1, tr(" kg"), tr("Set Mass"), SetBodyMassId, &BodyDef::mass);
+    m_mass = makeOverride("InspectorMass", 1e9, 3, 0.1, tr(" kg"), tr("Set Mass"), SetBodyMassId, &BodyDef::mass,
+                          tr("Mass must be above 0 kg."), false);
     overrides->addRow(m_mass.enabled, m_mass.value);
-    m_friction = makeOverride("InspectorFriction", 10.0, 3, 0.05, QString(), tr("Set Friction"), SetBodyFrictionId,
-                              &BodyDef::friction);
+    m_friction =
+        makeOverride("InspectorFriction", MaterialLibrary::kMaxFriction, 3, 0.05, QString(), tr("Set Friction"),
+                     SetBodyFrictionId, &BodyDef::friction, tr("Friction must be 0 or more."), true);
     overrides->addRow(m_friction.enabled, m_friction.value);
-    m_restitution = makeOverride("InspectorRestitution", 1.0, 3, 0.05, QString(), tr("Set Restitution"),
-                                 SetBodyRestitutionId, &BodyDef::restitution);
+    m_restitution =
+        makeOverride("InspectorRestitution", 1.0, 3, 0.05, QString(), tr("Set Restitution"), SetBodyRestitutionId,
+                     &BodyDef::restitution, tr("Restitution must be between 0 (no bounce) and 1 (elastic)."), true);
     overrides->addRow(m_restitution.enabled, m_restitution.value);
     m_density.enabled->setText(tr("Density"));
     m_mass.enabled->setText(tr("Mass"));
@@ -213,7 +225,8 @@ QDoubleSpinBox* InspectorWidget::makeSpinBox(const QString& objectName, double m
 
 InspectorWidget::OverrideRow InspectorWidget::makeOverride(const QString& objectName, double max, int decimals,
                                                            double step, const QString& suffix, const QString& text,
-                                                           int mergeId, std::optional<Real> BodyDef::*field) {
+                                                           int mergeId, std::optional<Real> BodyDef::*field,
+                                                           const QString& rangeMessage, bool zeroAllowed) {
     OverrideRow row;
     row.enabled = new QCheckBox(m_content);
     row.enabled->setObjectName(objectName + "Enabled");
@@ -229,11 +242,18 @@ InspectorWidget::OverrideRow InspectorWidget::makeOverride(const QString& object
                 b.*field = shown; // start from the effective material value the box shows
         });
     });
-    connect(row.value, &QDoubleSpinBox::valueChanged, this, [this, row, field, text, mergeId](double value) {
-        if (value <= row.value->minimum())
-            return; // the "mixed" sentinel is not a value
-        applyEdit(text, mergeId, [&](BodyDef& b) { b.*field = value; });
-    });
+    connect(row.value, &QDoubleSpinBox::valueChanged, this,
+            [this, row, field, text, mergeId, rangeMessage, zeroAllowed](double value) {
+                if (value <= row.value->minimum())
+                    return; // the "mixed" sentinel is not a value
+                if (value < 0.0 || (value == 0.0 && !zeroAllowed)) {
+                    m_message->showMessage(rangeMessage, MessageBar::Kind::Error);
+                    refresh(); // the box shows the value the bodies keep
+                    return;
+                }
+                m_message->clearMessage();
+                applyEdit(text, mergeId, [&](BodyDef& b) { b.*field = value; });
+            });
     return row;
 }
 
@@ -257,6 +277,8 @@ InspectorWidget::Vec3Row InspectorWidget::makeVec3(const QString& objectName, do
 }
 
 void InspectorWidget::setSelection(const QList<int>& bodies) {
+    if (bodies != m_selection)
+        m_message->clearMessage(); // a refusal is about the bodies it was shown for
     m_selection = bodies;
     refresh();
 }
@@ -340,21 +362,21 @@ void InspectorWidget::refresh() {
     {
         const QSignalBlocker blocker(m_material);
         m_material->clear();
-        QStringList names;
-        for (const MaterialDef& material : m_document->scene().materials)
-            names.append(QString::fromStdString(material.name));
-        for (const MaterialDef& preset : materialPresets())
-            if (!names.contains(QString::fromStdString(preset.name), Qt::CaseInsensitive))
-                names.append(QString::fromStdString(preset.name));
+        QStringList names; // the library's order: presets, then the scene's own materials
+        for (const LibraryEntry& entry : MaterialLibrary::entries(m_document->scene()))
+            names.append(QString::fromStdString(entry.material.name));
         for (const BodyDef* b : bodies) // a name the scene does not define still shows (it falls back to Default)
             if (!names.contains(QString::fromStdString(b->material), Qt::CaseInsensitive))
                 names.append(QString::fromStdString(b->material));
         m_material->addItems(names);
-        const auto material = common<std::string>(bodies, [](const BodyDef& b) { return b.material; });
-        m_material->setCurrentIndex(material ? static_cast<int>(names.indexOf(QString::fromStdString(*material), 0))
-                                             : -1);
-        if (material && m_material->currentIndex() < 0)
-            m_material->setCurrentText(QString::fromStdString(*material));
+        // Material names compare ignoring case, as the core looks them up ("wood" in a file is Wood).
+        const auto material =
+            common<QString>(bodies, [](const BodyDef& b) { return QString::fromStdString(b.material).toCaseFolded(); });
+        int current = -1;
+        for (qsizetype i = 0; material && i < names.size(); ++i)
+            if (names[i].toCaseFolded() == *material)
+                current = static_cast<int>(i);
+        m_material->setCurrentIndex(current);
     }
     auto values = [&](std::optional<Real> BodyDef::*field) {
         std::vector<std::optional<Real>> out;

@@ -19,6 +19,7 @@ class QLineEdit;
 namespace rl {
 
 class SceneDocument;
+class MessageBar;
 
 class InspectorWidget : public QWidget {
     Q_OBJECT
@@ -30,6 +31,9 @@ public:
 
     // Shown in place of a value that differs between the selected bodies.
     static QString mixedText();
+
+    // Why the last edit was refused (an override out of range), or an empty string.
+    QString message() const;
 
 private:
     // An optional override: a check box that enables it and the spin box holding the value.
@@ -46,8 +50,11 @@ private:
 
     QDoubleSpinBox* makeSpinBox(const QString& objectName, double min, double max, int decimals, double step,
                                 const QString& suffix);
+    // An override's value must be above min (or at least min when minInclusive); the spin box reaches below min
+    // only for its "mixed" sentinel and for typing slips, which are refused with a message.
     OverrideRow makeOverride(const QString& objectName, double max, int decimals, double step, const QString& suffix,
-                             const QString& text, int mergeId, std::optional<Real> BodyDef::*field);
+                             const QString& text, int mergeId, std::optional<Real> BodyDef::*field,
+                             const QString& rangeMessage, bool zeroAllowed);
     Vec3Row makeVec3(const QString& objectName, double range, int decimals, double step, const QString& suffix,
                      const QString& text, int mergeId, const std::function<void(BodyDef&, int, double)>& set);
 
@@ -60,6 +67,7 @@ private:
     QWidget* m_scroll = nullptr;
     QWidget* m_content = nullptr;
     QLabel* m_emptyLabel = nullptr;
+    MessageBar* m_message = nullptr;
 
     QLineEdit* m_name = nullptr;
     QCheckBox* m_anchor = nullptr;

@@ -22,6 +22,7 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rl {
@@ -34,6 +35,7 @@ constexpr double kMaxFps = 100000.0;
 constexpr int kMaxSteps = 1000;
 constexpr double kMaxGravity = 1000.0; // m/s², a hundred times Earth's
 constexpr double kMaxDamping = 1000.0; // 1/s
+constexpr int kFieldWidth = 150;       // px: numbers need no more, and a row of fields reads better than a wall
 
 struct GravityPreset {
     const char* name;
@@ -107,7 +109,9 @@ WorldSettingsWidget::WorldSettingsWidget(SceneDocument* document, QWidget* paren
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // the panel wraps to the dock's width
     auto* content = new QWidget(scroll);
+    content->setObjectName("WorldSettingsContent");
     scroll->setWidget(content);
     outer->addWidget(scroll);
     auto* sections = new QVBoxLayout(content);
@@ -137,6 +141,7 @@ WorldSettingsWidget::WorldSettingsWidget(SceneDocument* document, QWidget* paren
         box->setKeyboardTracking(false);
         box->setAccelerated(true);
         box->setAlignment(Qt::AlignRight);
+        box->setMaximumWidth(kFieldWidth);
         return box;
     };
     auto makeInt = [&](const QString& objectName, int max) {
@@ -145,6 +150,7 @@ WorldSettingsWidget::WorldSettingsWidget(SceneDocument* document, QWidget* paren
         box->setRange(0, max);
         box->setKeyboardTracking(false);
         box->setAlignment(Qt::AlignRight);
+        box->setMaximumWidth(kFieldWidth);
         return box;
     };
 
@@ -350,6 +356,17 @@ WorldSettingsWidget::WorldSettingsWidget(SceneDocument* document, QWidget* paren
     bottom->addWidget(defaults);
     sections->addLayout(bottom);
     sections->addStretch(1);
+    // One label width for every group, so that the fields line up down the panel.
+    int labelWidth = 0;
+    const QList<QFormLayout*> forms = content->findChildren<QFormLayout*>();
+    for (QFormLayout* form : forms)
+        for (int row = 0; row < form->rowCount(); ++row)
+            if (QLayoutItem* item = form->itemAt(row, QFormLayout::LabelRole); item && item->widget())
+                labelWidth = std::max(labelWidth, item->widget()->sizeHint().width());
+    for (QFormLayout* form : forms)
+        for (int row = 0; row < form->rowCount(); ++row)
+            if (QLayoutItem* item = form->itemAt(row, QFormLayout::LabelRole); item && item->widget())
+                item->widget()->setMinimumWidth(labelWidth);
 
     // The decision needs a World built from the scene, so it waits until edits pause.
     m_decisionTimer->setSingleShot(true);
@@ -508,18 +525,22 @@ void WorldSettingsWidget::refreshEffects() {
         const bool on = m_decision->effects.on[k];
         const EffectMode mode = w.effects.modes[k];
         QString text;
+        QString toolTip = QString::fromStdString(m_decision->reasons[k]);
         if (mode == EffectMode::Auto) {
             text = QStringLiteral("%1 · %2").arg(state(on), reasonText(m_decision->reasons[k]).toHtmlEscaped());
         } else {
+            // Short, so that the row stays one line; the tooltip says why Auto would differ.
             text = state(on) + QStringLiteral(" · ") + tr("forced");
-            if (m_autoDecision)
+            if (m_autoDecision) {
+                const bool autoOn = m_autoDecision->effects.on[k];
                 text += QStringLiteral(" <span style=\"color:%1\">(%2)</span>")
-                            .arg(offColor, tr("Auto would be %1: %2")
-                                               .arg(m_autoDecision->effects.on[k] ? tr("on") : tr("off"),
-                                                    reasonText(m_autoDecision->reasons[k]).toHtmlEscaped()));
+                            .arg(offColor, tr("Auto: %1").arg(autoOn ? tr("on") : tr("off")));
+                toolTip = tr("Auto would turn it %1: %2")
+                              .arg(autoOn ? tr("on") : tr("off"), reasonText(m_autoDecision->reasons[k]));
+            }
         }
         status->setText(text);
-        status->setToolTip(QString::fromStdString(m_decision->reasons[k]));
+        status->setToolTip(toolTip);
     }
 }
 

@@ -73,6 +73,9 @@ MainWindow::MainWindow(QWidget* parent)
     statusBar()->addPermanentWidget(m_selectionLabel);
     statusBar()->addPermanentWidget(m_bodyCountLabel);
     statusBar()->addPermanentWidget(m_frameTimeLabel);
+    // Fixed minimum widths, so that a changing read-out does not make its neighbours jump.
+    m_selectionLabel->setMinimumWidth(fontMetrics().horizontalAdvance(tr("nothing selected")) + 8);
+    m_frameTimeLabel->setMinimumWidth(fontMetrics().horizontalAdvance(tr("frame %1 ms").arg(999.9, 0, 'f', 1)) + 8);
     connect(m_viewport, &Viewport::frameRendered, this,
             [this](double ms) { m_frameTimeLabel->setText(tr("frame %1 ms").arg(ms, 0, 'f', 1)); });
     connect(m_viewport, &Viewport::selectionChanged, this, [this](const QList<int>& picked, bool extend) {
@@ -112,7 +115,11 @@ MainWindow::MainWindow(QWidget* parent)
     updateStatus();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // The document outlives the docks and the viewport during destruction: stop its signals reaching them first.
+    disconnect(m_document, nullptr, this, nullptr);
+    disconnect(m_document->undoStack(), nullptr, this, nullptr);
+}
 
 void MainWindow::createDocks() {
     auto* dock = new QDockWidget(tr("Outliner"), this);
@@ -174,7 +181,7 @@ void MainWindow::createMenus() {
     };
     add(Menu::File, tr("&File"), "FileMenu");
     add(Menu::Edit, tr("&Edit"), "EditMenu");
-    add(Menu::Add, tr("&Add"), "AddMenu");
+    add(Menu::Add, tr("A&dd"), "AddMenu"); // not "&Add": Alt+A toggles the anchor
     add(Menu::View, tr("&View"), "ViewMenu");
     add(Menu::Simulation, tr("&Simulation"), "SimulationMenu");
     add(Menu::Analysis, tr("A&nalysis"), "AnalysisMenu");

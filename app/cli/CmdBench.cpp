@@ -1,5 +1,7 @@
 // rigidlab-cli bench: steps named library scenes or scene files at default settings and prints, per scene, one line
 // of wall-clock cost per step (median, p95), the work left at the end, and with --scaling the cost exponent vs n.
+// When the build links Debian's Bullet, the same scene is stepped in Bullet right after and the ratio is printed.
+#include "BulletReference.h"
 #include "Cli.h"
 #include "io/SceneImport.h"
 #include "scene/SceneLibrary.h"
@@ -13,8 +15,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <optional>
 #include <string>
+#include <time.h>
 #include <unistd.h>
 #include <vector>
 
@@ -33,12 +37,16 @@ struct BenchTarget {
     int frames = kDefaultFrames;
 };
 
+// The bundled copy of the original project's 642-cube ramps scene, which `bench ramps` names.
+const char* const kRampsScene = RL_RESOURCES_DIR "/scenes/ramps.obj";
+
 struct BenchResult {
     size_t bodies = 0;
     int frames = 0;
     double medianMs = 0.0;
     double p95Ms = 0.0;
     double meanMs = 0.0;
+    double cpuMedianMs = 0.0; // CPU time of the stepping thread: less disturbed by other jobs on a shared machine
     int awake = 0;
     int contacts = 0;
     // Profile totals over the run, grouped: broadphase, narrowphase, solver (islands through restitution), other.
@@ -71,6 +79,7 @@ QString namesList() {
     QStringList list;
     for (const std::string& n : scenes::names())
         list << QString::fromStdString(n);
+    list << QStringLiteral("ramps");
     return list.join(", ");
 }
 
@@ -79,21 +88,37 @@ bool looksLikeFile(const QString& arg) {
     return arg.contains('/') || arg.contains('.') || QFileInfo::exists(arg);
 }
 
-// Steps the world `frames` times, timing each step; false if a body left the finite numbers.
-bool runWorld(World& world, int frames, const QString& label, bool quiet, BenchResult& out) {
+double threadCpuMs() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+}
+
+std::string loadAverage() {
+    std::ifstream in("/proc/loadavg");
+    std::string a, b, c;
+    in >> a >> b >> c;
+    return a + " " + b + " " + c;
+}
+
+// Calls step() `frames` times, timing each call (wall and thread CPU), with progress on stderr.
+template <class StepFn>
+void timeSteps(int frames, const QString& label, bool quiet, BenchResult& out, StepFn&& step) {
     using Clock = std::chrono::steady_clock;
-    std::vector<double> stepMs;
+    std::vector<double> stepMs, cpuMs;
     stepMs.reserve(static_cast<size_t>(frames));
-    world.resetProfile();
+    cpuMs.reserve(static_cast<size_t>(frames));
     QElapsedTimer clock;
     clock.start();
     qint64 lastReport = 0;
     // On a terminal the progress line is rewritten in place; in a log it is one line per report.
     const bool terminal = isatty(fileno(stderr)) != 0;
     for (int f = 0; f < frames; ++f) {
+        const double c0 = threadCpuMs();
         const Clock::time_point start = Clock::now();
-        world.step();
+        step();
         stepMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        cpuMs.push_back(threadCpuMs() - c0);
         const qint64 now = clock.elapsed();
         if (!quiet && now - lastReport >= (terminal ? 500 : 5000)) {
             lastReport = now;
@@ -105,15 +130,23 @@ bool runWorld(World& world, int frames, const QString& label, bool quiet, BenchR
     if (!quiet && terminal && lastReport > 0)
         std::fputc('\n', stderr);
 
-    out.bodies = world.bodyCount();
     out.frames = frames;
     double total = 0.0;
     for (double ms : stepMs)
         total += ms;
     out.meanMs = frames > 0 ? total / frames : 0.0;
     std::sort(stepMs.begin(), stepMs.end());
+    std::sort(cpuMs.begin(), cpuMs.end());
     out.medianMs = median(stepMs);
     out.p95Ms = percentile(stepMs, 0.95);
+    out.cpuMedianMs = median(cpuMs);
+}
+
+// Steps the world `frames` times, timing each step; false if a body left the finite numbers.
+bool runWorld(World& world, int frames, const QString& label, bool quiet, BenchResult& out) {
+    world.resetProfile();
+    timeSteps(frames, label, quiet, out, [&] { world.step(); });
+    out.bodies = world.bodyCount();
     const FrameDiagnostics d = world.diagnostics();
     out.awake = d.awakeBodies;
     out.contacts = d.contactPoints;
@@ -137,7 +170,7 @@ bool runWorld(World& world, int frames, const QString& label, bool quiet, BenchR
 
 QString resultLine(const QString& label, const BenchResult& r) {
     return QString("scene=%1 bodies=%2 frames=%3 median_ms=%4 p95_ms=%5 mean_ms=%6 awake=%7 contacts=%8 "
-                   "broad_ms=%9 narrow_ms=%10 solve_ms=%11 other_ms=%12\n")
+                   "broad_ms=%9 narrow_ms=%10 solve_ms=%11 other_ms=%12 cpu_median_ms=%13\n")
         .arg(label)
         .arg(r.bodies)
         .arg(r.frames)
@@ -149,7 +182,27 @@ QString resultLine(const QString& label, const BenchResult& r) {
         .arg(r.broadMs, 0, 'f', 1)
         .arg(r.narrowMs, 0, 'f', 1)
         .arg(r.solveMs, 0, 'f', 1)
-        .arg(r.otherMs, 0, 'f', 1);
+        .arg(r.otherMs, 0, 'f', 1)
+        .arg(r.cpuMedianMs, 0, 'f', 3);
+}
+
+// Bullet on the same scene, and RigidLab's cost as a ratio of Bullet's (above 1: RigidLab is slower).
+QString bulletLines(const QString& label, const BenchResult& ours, const BenchResult& bullet) {
+    const auto ratio = [](double a, double b) { return b > 0.0 ? a / b : 0.0; };
+    return QString("bullet scene=%1 bodies=%2 frames=%3 median_ms=%4 p95_ms=%5 mean_ms=%6 awake=%7 contacts=%8 "
+                   "cpu_median_ms=%9\nratio scene=%1 rigidlab/bullet median=%10 cpu_median=%11 mean=%12\n")
+        .arg(label)
+        .arg(bullet.bodies)
+        .arg(bullet.frames)
+        .arg(bullet.medianMs, 0, 'f', 3)
+        .arg(bullet.p95Ms, 0, 'f', 3)
+        .arg(bullet.meanMs, 0, 'f', 3)
+        .arg(bullet.awake)
+        .arg(bullet.contacts)
+        .arg(bullet.cpuMedianMs, 0, 'f', 3)
+        .arg(ratio(ours.medianMs, bullet.medianMs), 0, 'f', 2)
+        .arg(ratio(ours.cpuMedianMs, bullet.cpuMedianMs), 0, 'f', 2)
+        .arg(ratio(ours.meanMs, bullet.meanMs), 0, 'f', 2);
 }
 
 // Slope of the least-squares line through (log x, log y): the exponent k of y ~ x^k.
@@ -181,9 +234,13 @@ int runBench(const QStringList& arguments) {
     parser.setApplicationDescription(
         "Step scenes at their default settings and print the wall-clock cost per step, one line per scene:\n"
         "scene= bodies= frames= median_ms= p95_ms= mean_ms= awake= contacts= broad_ms= narrow_ms= solve_ms= "
-        "other_ms=\n(awake and contacts after the last step; the *_ms stage groups are totals over the run).\n"
-        "Without scenes, runs stack20, pyramid20 and boxes1000 for 120 frames.\nNamed scenes: " +
-        namesList());
+        "other_ms= cpu_median_ms=\n(awake and contacts after the last step; the *_ms stage groups are totals over the "
+        "run).\nWhen built with Debian's libbullet-dev, each scene is then stepped in Bullet at its defaults (hull "
+        "against hull, same fps, same materials) and two more lines follow: bullet scene=... and ratio scene=... "
+        "rigidlab/bullet median= cpu_median= mean= (above 1: RigidLab is slower).\n"
+        "Without scenes, runs stack20, pyramid20, ramps and boxes1000 for 120 frames.\nNamed scenes: " +
+        namesList() + " (ramps is the original project's 642-cube scene, resources/scenes/ramps.obj).\n" +
+        QString::fromStdString(bench::BulletReference::description()));
     parser.addHelpOption();
     parser.addPositionalArgument("scenes", "Library scene names or scene files (.rlscene, .obj, ...).",
                                  "[SCENE|NAME ...]");
@@ -193,7 +250,10 @@ int runBench(const QStringList& arguments) {
                           .arg(kQuickFrames)
                           .arg(kScalingFrames),
                       "n"});
-    parser.addOption({"threads", "Worker threads for the narrowphase (default 1).", "t"});
+    parser.addOption({"threads", "Worker threads for RigidLab's step (default 1).", "t"});
+    parser.addOption({"no-bullet", "Do not run Bullet on the same scenes."});
+    parser.addOption({"no-sleep", "Keep every body awake in both engines (RigidLab: effects auto,-sleeping; Bullet: "
+                                  "DISABLE_DEACTIVATION)."});
     parser.addOption({"scaling", "Run scale1k ... scale16k and fit the exponent of cost vs bodies (log-log)."});
     parser.addOption({"quiet", "No progress on stderr."});
     if (const std::optional<int> done = parseArguments(parser, arguments, "bench"))
@@ -231,12 +291,12 @@ int runBench(const QStringList& arguments) {
         for (const char* name : {"scale1k", "scale2k", "scale4k", "scale8k", "scale16k"})
             targets.push_back({name, true, frames.value_or(kScalingFrames)});
     } else if (positional.isEmpty()) {
-        for (const char* name : {"stack20", "pyramid20", "boxes1000"})
+        for (const char* name : {"stack20", "pyramid20", "ramps", "boxes1000"})
             targets.push_back({name, true, frames.value_or(kQuickFrames)});
     } else {
         for (const QString& arg : positional) {
             const std::string s = arg.toStdString();
-            const bool named = scenes::byName(s).has_value();
+            const bool named = scenes::byName(s).has_value() || s == "ramps";
             if (!named && !looksLikeFile(arg)) {
                 printError("rigidlab-cli bench: unknown scene '" + arg + "'; named scenes: " + namesList() +
                            " (or give a scene file)");
@@ -246,17 +306,29 @@ int runBench(const QStringList& arguments) {
         }
     }
 
+    const bool noSleep = parser.isSet("no-sleep");
+    const bool withBullet = !parser.isSet("no-bullet") && bench::BulletReference::available();
+    if (!quiet)
+        printError(QString("bench: threads %1, sleeping %2; %3; load average %4")
+                       .arg(threads)
+                       .arg(noSleep ? "off in both engines" : "at each engine's default")
+                       .arg(withBullet ? QString::fromStdString(bench::BulletReference::description())
+                                       : QStringLiteral("no Bullet comparison"))
+                       .arg(QString::fromStdString(loadAverage())));
+
     WorldOptions options;
     options.threads = threads;
+    if (noSleep)
+        options.effects = EffectsSetting::parse("auto,-sleeping");
     bool failed = false;
     std::vector<double> scalingN, scalingMs;
     for (const BenchTarget& target : targets) {
         const QString label = QString::fromStdString(target.label);
         Scene scene;
-        if (target.named) {
+        if (target.named && target.label != "ramps") {
             scene = *scenes::byName(target.label);
         } else {
-            Result<Scene> imported = importScene(target.label);
+            Result<Scene> imported = importScene(target.label == "ramps" ? std::string(kRampsScene) : target.label);
             if (!imported) {
                 printError(imported.error().toString());
                 failed = true;
@@ -280,6 +352,22 @@ int runBench(const QStringList& arguments) {
         }
         printOut(resultLine(label, result));
         std::fflush(stdout);
+        if (withBullet) {
+            std::string error;
+            std::unique_ptr<bench::BulletReference> bullet = bench::BulletReference::create(scene, noSleep, &error);
+            if (!bullet) {
+                printError(label + ": Bullet: " + QString::fromStdString(error));
+                failed = true;
+                continue;
+            }
+            BenchResult reference;
+            reference.bodies = scene.bodies.size();
+            timeSteps(target.frames, label + " (Bullet)", quiet, reference, [&] { bullet->step(); });
+            reference.awake = bullet->awakeBodies();
+            reference.contacts = bullet->contactPoints();
+            printOut(bulletLines(label, result, reference));
+            std::fflush(stdout);
+        }
         if (scaling) {
             size_t dynamicBodies = 0;
             for (const BodyDef& b : scene.bodies)

@@ -5,6 +5,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
+
 namespace {
 
 using rl::test::runCli;
@@ -27,7 +29,7 @@ class TestCliBench : public QObject {
     Q_OBJECT
 private slots:
     void namedSceneLine() {
-        const Run r = runCli({"bench", "stack20", "--frames", "10", "--quiet"});
+        const Run r = runCli({"bench", "stack20", "--frames", "10", "--quiet", "--no-bullet"});
         QCOMPARE(r.exitCode, 0);
         const QStringList lines = QString::fromUtf8(r.out).split('\n', Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 1);
@@ -35,7 +37,8 @@ private slots:
         QCOMPARE(f.value("scene"), QStringLiteral("stack20"));
         QCOMPARE(f.value("bodies"), QStringLiteral("21")); // floor + 20 cubes
         QCOMPARE(f.value("frames"), QStringLiteral("10"));
-        for (const char* key : {"median_ms", "p95_ms", "mean_ms", "broad_ms", "narrow_ms", "solve_ms", "other_ms"}) {
+        for (const char* key :
+             {"median_ms", "p95_ms", "mean_ms", "broad_ms", "narrow_ms", "solve_ms", "other_ms", "cpu_median_ms"}) {
             bool ok = false;
             const double v = f.value(key).toDouble(&ok);
             QVERIFY2(ok && v >= 0.0, key);
@@ -48,6 +51,53 @@ private slots:
         }
         // The cubes of the stack rest on each other and on the floor.
         QVERIFY(f.value("contacts").toInt() > 0);
+    }
+
+    // Built with Debian's Bullet (CI installs libbullet-dev), every scene is also stepped in Bullet and the ratio of
+    // the two costs is printed from the same run. ramps names the bundled 642-cube scene.
+    void bulletComparison_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<int>("bodies");
+        QTest::addColumn<bool>("noSleep");
+        QTest::newRow("stack20") << "stack20" << 21 << false;
+        QTest::newRow("ramps") << "ramps" << 646 << false;
+        QTest::newRow("stack20, no sleep") << "stack20" << 21 << true;
+    }
+    void bulletComparison() {
+        QFETCH(QString, scene);
+        QFETCH(int, bodies);
+        QFETCH(bool, noSleep);
+        QStringList args{"bench", scene, "--frames", "20", "--quiet"};
+        if (noSleep)
+            args << "--no-sleep";
+        const Run r = runCli(args);
+        QCOMPARE(r.exitCode, 0);
+        const QStringList lines = QString::fromUtf8(r.out).split('\n', Qt::SkipEmptyParts);
+        const QString help = QString::fromUtf8(runCli({"bench", "--help"}).out);
+        if (help.contains("not built in")) {
+            QCOMPARE(lines.size(), 1); // a build without libbullet-dev prints RigidLab's line only
+            return;
+        }
+        QCOMPARE(lines.size(), 3);
+        QVERIFY(lines[0].startsWith("scene=" + scene + " "));
+        QVERIFY(lines[1].startsWith("bullet scene=" + scene + " "));
+        QVERIFY(lines[2].startsWith("ratio scene=" + scene + " rigidlab/bullet "));
+        const QHash<QString, QString> ours = fields(lines[0]);
+        const QHash<QString, QString> bullet = fields(lines[1]);
+        const QHash<QString, QString> ratio = fields(lines[2]);
+        QCOMPARE(bullet.value("bodies").toInt(), bodies);
+        QCOMPARE(ours.value("bodies").toInt(), bodies);
+        QCOMPARE(bullet.value("frames"), QStringLiteral("20"));
+        const double ourMedian = ours.value("median_ms").toDouble();
+        const double bulletMedian = bullet.value("median_ms").toDouble();
+        QVERIFY(ourMedian > 0.0 && bulletMedian > 0.0);
+        // The printed ratio is the ratio of the printed medians (to their rounding).
+        QVERIFY(std::abs(ratio.value("median").toDouble() - ourMedian / bulletMedian) <=
+                0.01 + 0.01 * ourMedian / bulletMedian);
+        if (noSleep) // nothing sleeps after 20 frames anyway, but with --no-sleep both engines keep all awake
+            QCOMPARE(bullet.value("awake").toInt(), bodies - 1);
+        if (scene == "stack20") // the cubes rest on each other in both engines (the ramps' cubes are still falling)
+            QVERIFY(bullet.value("contacts").toInt() > 0 && ours.value("contacts").toInt() > 0);
     }
 
     void progressGoesToStderr() {

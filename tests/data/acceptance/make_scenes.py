@@ -1,0 +1,264 @@
+"""Acceptance scenes for issue 4, made the way a reviewer makes them: in Blender, by hand-style bpy calls.
+
+Run headless with Blender 3.4 (writes next to this script unless an output folder follows "--"):
+
+    blender -b --factory-startup --python-exit-code 1 --python tests/data/acceptance/make_scenes.py [-- OUTDIR]
+
+Objects are placed in Blender's own frame (Z up, metres), with Blender's primitive operators, and exported with
+Blender's own exporters at their default options, as a user would:
+- OBJ: bpy.ops.export_scene.obj(filepath=...) (the 3.4 legacy exporter; forward -Z, up Y, whole scene);
+- FBX: bpy.ops.export_scene.fbx, once at its defaults (Y up) and once with axis_up='Z', axis_forward='Y';
+- glTF: bpy.ops.export_scene.gltf (GLB, +Y up).
+Masses, friction and restitution that no material preset gives come from JSON .rlscene files written at the end,
+which take the bodies out of the exported OBJ files ("shape": {"obj": ..., "object": ...}) and override them.
+
+The legacy OBJ exporter writes "o <object>_<mesh>" when the two names differ, so every object here gets a mesh of
+the same name (as Blender's own primitives do), except in tower20_legacy_names.obj, which keeps the mesh names a
+user gets after renaming only the object (see /work/notes/acceptance.md, IMPORT-1).
+"""
+
+import json
+import math
+import os
+import sys
+
+import bpy
+
+OUT = os.path.dirname(os.path.abspath(__file__))
+if "--" in sys.argv and sys.argv.index("--") + 1 < len(sys.argv):
+    OUT = os.path.abspath(sys.argv[sys.argv.index("--") + 1])
+os.makedirs(OUT, exist_ok=True)
+
+
+def reset():
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+
+
+def material(obj, name):
+    mat = bpy.data.materials.get(name) or bpy.data.materials.new(name)
+    obj.data.materials.clear()
+    obj.data.materials.append(mat)
+
+
+def named(name, rename_mesh=True, mat=None):
+    """Name the active object (Blender appends .001, ... on clashes) and, by default, its mesh the same."""
+    obj = bpy.context.active_object
+    obj.name = name
+    if rename_mesh:
+        obj.data.name = obj.name
+    if mat:
+        material(obj, mat)
+    return obj
+
+
+def cube(name, size=1.0, location=(0, 0, 0), scale=(1, 1, 1), rotation=(0, 0, 0), mat=None, rename_mesh=True):
+    bpy.ops.mesh.primitive_cube_add(size=size, location=location, rotation=rotation, scale=scale)
+    obj = named(name, rename_mesh, mat)
+    bpy.ops.object.transform_apply(location=False, rotation=False, scale=True)
+    return obj
+
+
+def floor_plane(size=20.0, mat=None, rename_mesh=True):
+    bpy.ops.mesh.primitive_plane_add(size=size)
+    return named("Anchor", rename_mesh, mat)
+
+
+def floor_box(mat=None):
+    """A 40 x 40 x 1 m box whose top face is z = 0."""
+    return cube("Anchor", location=(0, 0, -0.5), scale=(40, 40, 1), mat=mat)
+
+
+def export_obj(name, **kw):
+    path = os.path.join(OUT, name)
+    bpy.ops.export_scene.obj(filepath=path, **kw)
+    print("exported", path, len(bpy.context.scene.objects), "objects")
+
+
+def tower(n, box_floor):
+    reset()
+    if box_floor:
+        floor_box()
+    else:
+        floor_plane()
+    for i in range(n):
+        cube("Cube", location=(0, 0, 0.5 + i))
+
+
+def write_json(name, doc):
+    path = os.path.join(OUT, name)
+    with open(path, "w") as f:
+        json.dump(doc, f, indent=2)
+        f.write("\n")
+    print("wrote", path)
+
+
+def obj_body(file, obj, **extra):
+    body = {"name": obj, "shape": {"obj": file, "object": obj}}
+    if obj.split(".")[0] == "Anchor":
+        body["anchor"] = True
+    body.update(extra)
+    return body
+
+
+def scene(bodies, **world):
+    doc = {"format": "rigidlab-scene", "version": 1}
+    if world:
+        doc["world"] = world
+    doc["bodies"] = bodies
+    return doc
+
+
+# Towers: 20 unit cubes on a floor plane, 40 on a floor box.
+tower(20, box_floor=False)
+export_obj("tower20.obj")
+# The same tower through FBX (Y up, the default; and Z up) and glTF.
+bpy.ops.export_scene.fbx(filepath=os.path.join(OUT, "tower20.fbx"))
+bpy.ops.export_scene.fbx(filepath=os.path.join(OUT, "tower20_zup.fbx"), axis_up='Z', axis_forward='Y')
+bpy.ops.export_scene.gltf(filepath=os.path.join(OUT, "tower20.glb"))
+tower(40, box_floor=True)
+export_obj("tower40.obj")
+
+# The tower a user gets after renaming only the plane object to Anchor: the exporter writes "o Anchor_Plane".
+reset()
+floor_plane(rename_mesh=False)
+for i in range(20):
+    cube("Cube", location=(0, 0, 0.5 + i), rename_mesh=False)
+export_obj("tower20_legacy_names.obj")
+
+# Pyramid, base 20 (210 unit cubes), each row shifted by half a cube.
+reset()
+floor_plane(size=40)
+for row in range(20):
+    n = 20 - row
+    for k in range(n):
+        cube("Cube", location=(-0.5 * (n - 1) + k, 0, 0.5 + row))
+export_obj("pyramid20.obj")
+
+# 20 x 20 x 1 m slab on two unit cubes 16 m apart.
+reset()
+floor_plane(size=40)
+cube("Left", location=(-8, 0, 0.5))
+cube("Right", location=(8, 0, 0.5))
+cube("Slab", location=(0, 0, 1.5), scale=(20, 20, 1))
+export_obj("slab.obj")
+
+# 30-layer Jenga tower: Jenga blocks scaled 10x (0.75 x 0.25 x 0.15 m), three per layer, layers crossed, Wood.
+reset()
+floor_box(mat="Wood")
+for layer in range(30):
+    z = 0.075 + 0.15 * layer
+    for k in (-1, 0, 1):
+        if layer % 2 == 0:
+            cube("Block", location=(0, 0.25 * k, z), scale=(0.75, 0.25, 0.15), mat="Wood")
+        else:
+            cube("Block", location=(0.25 * k, 0, z), scale=(0.25, 0.75, 0.15), mat="Wood")
+export_obj("jenga30.obj")
+
+# Block on a 30 degree slope: a 20 x 4 x 1 m ramp tilted about Blender's y axis (lower at +x), its top face through
+# the origin, and a 0.5 m cube resting on it. Concrete on Concrete: mu 0.7 straight from the OBJ.
+reset()
+theta = math.radians(30.0)
+normal = (math.sin(theta), 0.0, math.cos(theta))  # ramp top normal after rotating about +y by theta
+cube("Anchor", location=tuple(-0.5 * c for c in normal), scale=(20, 4, 1), rotation=(0, theta, 0), mat="Concrete")
+cube("Block", size=0.5, location=tuple(0.25 * c for c in normal), rotation=(0, theta, 0), mat="Concrete")
+export_obj("slope30.obj")
+
+# Drop: a UV sphere (r 0.1 m) whose bottom is 5 m above a floor plane.
+reset()
+floor_plane()
+bpy.ops.mesh.primitive_uv_sphere_add(radius=0.1, location=(0, 0, 5.1))
+named("Ball")
+export_obj("drop.obj")
+
+# Drop of a 0.2 m cube, face down, its bottom 5 m above a floor plane.
+reset()
+floor_plane()
+cube("Box", size=0.2, location=(0, 0, 5.1))
+export_obj("drop_cube.obj")
+
+# Two 0.5 m cubes, Light under Heavy (masses come from mass_ratio.rlscene).
+reset()
+floor_plane()
+cube("Light", size=0.5, location=(0, 0, 0.25))
+cube("Heavy", size=0.5, location=(0, 0, 0.75))
+export_obj("mass.obj")
+
+# Mixed shapes on a floor plane: cubes (and a 3-stack), UV spheres, cylinders, cones, an icosphere, a torus and
+# Suzanne (both concave: simulated as their hulls), each 5 cm above what it rests on.
+reset()
+floor_plane(size=40, mat="Concrete")
+mats = ["Wood", "Steel", "Rubber", "Plastic", "Default", "Ice"]
+
+
+def drop_on_floor(obj, gap=0.05):
+    bpy.context.view_layer.update()
+    low = min((obj.matrix_world @ v.co).z for v in obj.data.vertices)
+    obj.location.z += gap - low
+
+
+for i in range(3):
+    cube("Cube", location=(-6 + 2.5 * i, -3, 0), mat=mats[i])
+    drop_on_floor(bpy.context.active_object)
+for i in range(3):  # a stack of three 0.6 m cubes, 5 cm apart
+    cube("Stacked", size=0.6, location=(3, -3, 0.35 + 0.65 * i), mat="Wood")
+for i in range(3):
+    bpy.ops.mesh.primitive_uv_sphere_add(radius=0.4, location=(-6 + 2.5 * i, 0, 0))
+    named("Sphere", mat=mats[i + 1])
+    drop_on_floor(bpy.context.active_object)
+for i in range(3):
+    bpy.ops.mesh.primitive_cylinder_add(radius=0.4, depth=1.0, location=(-6 + 2.5 * i, 3, 0))
+    named("Cylinder", mat=mats[i + 2])
+    drop_on_floor(bpy.context.active_object)
+for i in range(2):
+    bpy.ops.mesh.primitive_cone_add(radius1=0.5, depth=1.0, location=(1.5 + 2.5 * i, 3, 0))
+    named("Cone", mat=mats[i])
+    drop_on_floor(bpy.context.active_object)
+bpy.ops.mesh.primitive_ico_sphere_add(radius=0.5, location=(1.5, 0, 0))
+named("Icosphere", mat="Plastic")
+drop_on_floor(bpy.context.active_object)
+bpy.ops.mesh.primitive_torus_add(major_radius=0.6, minor_radius=0.2, location=(4, 0, 0))
+named("Torus", mat="Wood")
+drop_on_floor(bpy.context.active_object)
+bpy.ops.mesh.primitive_monkey_add(size=1.0, location=(6.5, 0, 0), rotation=(math.radians(-90), 0, 0))
+named("Suzanne", mat="Rubber")  # lying on its face
+drop_on_floor(bpy.context.active_object)
+export_obj("mixed_shapes.obj")
+
+# JSON scenes over the exported OBJ files.
+write_json("slope30_mu07.rlscene", scene([
+    obj_body("slope30.obj", "Anchor", friction=0.7, restitution=0.0),
+    obj_body("slope30.obj", "Block", friction=0.7, restitution=0.0)]))
+write_json("slope30_mu03.rlscene", scene([
+    obj_body("slope30.obj", "Anchor", friction=0.3, restitution=0.0),
+    obj_body("slope30.obj", "Block", friction=0.3, restitution=0.0)]))
+write_json("drop_e05.rlscene", scene([
+    obj_body("drop.obj", "Anchor", restitution=0.5),
+    obj_body("drop.obj", "Ball", restitution=0.5)]))
+write_json("drop_cube_e05.rlscene", scene([
+    obj_body("drop_cube.obj", "Anchor", restitution=0.5),
+    obj_body("drop_cube.obj", "Box", restitution=0.5)]))
+write_json("mass_ratio.rlscene", scene([
+    obj_body("drop.obj", "Anchor"),
+    obj_body("mass.obj", "Light", mass=1.0),
+    obj_body("mass.obj", "Heavy", mass=1000.0)]))
+
+# Pure JSON: a 1:10:100:1000 ladder of 0.5 m boxes (lightest at the bottom), and the 1:1000 pair as boxes.
+floor = {"name": "Floor", "anchor": True, "shape": {"box": [200, 0.5, 200]}, "position": [0, -0.5, 0]}
+write_json("mass_ladder.rlscene", scene([floor] + [
+    {"name": "M%d" % m, "shape": {"box": [0.25, 0.25, 0.25]}, "position": [0, 0.25 + 0.5 * i, 0], "mass": m}
+    for i, m in enumerate([1.0, 10.0, 100.0, 1000.0])]))
+write_json("mass_pair_boxes.rlscene", scene([floor,
+    {"name": "Light", "shape": {"box": [0.5, 0.5, 0.5]}, "position": [0, 0.5, 0], "mass": 1.0},
+    {"name": "Heavy", "shape": {"box": [0.5, 0.5, 0.5]}, "position": [0, 1.5, 0], "mass": 1000.0}]))
+
+# Projectiles: a lob in free flight (exact parabola until it lands at about t = 1.7 s), a 0.1 m steel cube at
+# 300 m/s into a 5 cm anchor wall, and a 1,000 kg ball at 10 m/s into a 1 kg box resting on the floor.
+write_json("projectile_lob.rlscene", scene([floor,
+    {"name": "Shot", "shape": {"sphere": 0.1}, "position": [0, 1.1, 0], "velocity": [4, 8, 0]}]))
+write_json("projectile_wall.rlscene", scene([floor,
+    {"name": "Wall", "anchor": True, "shape": {"box": [0.025, 2, 2]}, "position": [5, 2, 0]},
+    {"name": "Bullet", "shape": {"box": [0.05, 0.05, 0.05]}, "material": "Steel", "position": [0, 1, 0],
+     "velocity": [300, 0, 0]}]))
+write_json("projectile_heavy.rlscene", scene([floor,
+    {"name": "Box", "shape": {"box": [0.1, 0.1, 0.1]}, "position": [3, 0.1, 0], "mass": 1.0},
+    {"name": "Ball", "shape": {"sphere": 0.5}, "position": [0, 0.5, 0], "velocity": [10, 0, 0], "mass": 1000.0}]))

@@ -1,0 +1,352 @@
+// Issue 4, "How it will be checked", done as the reviewers will do it: scenes made with Blender 3.4's own exporters
+// (tests/data/acceptance/make_scenes.py) and JSON scenes over them are baked with `rigidlab-cli bake SCENE
+// --seconds 10 --csv OUT.csv` at default settings, and each threshold of the issue's table is checked from the CSV
+// alone (plus the OBJ vertices for the lowest point). Re-bakes and 2-thread bakes must hash identically, and the
+// accuracy orders are refitted from `rigidlab-cli accuracy --csv`. The 642-cube ramps scene is in
+// tst_acceptance_slow. Findings are written up in /work/notes/acceptance.md.
+#include "data/acceptance/AcceptanceCsv.h"
+
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+using namespace rl::test::acceptance;
+
+namespace {
+
+constexpr double kG = 9.81;
+
+#define BAKE_OR_FAIL(var, ...)                                                                                         \
+    const Bake var = bake(__VA_ARGS__);                                                                                \
+    QVERIFY2(var.run.exitCode == 0, qPrintable(var.command + "\n" + QString::fromUtf8(var.run.err)));                  \
+    QVERIFY2(var.csv.ok, qPrintable(var.csv.error));                                                                   \
+    QCOMPARE(var.csv.frames, 601);                                                                                     \
+    QVERIFY2(var.csv.allFinite(), "NaN or inf in the CSV")
+
+// Least-squares slope of log(error) over log(step).
+double fitOrder(const std::vector<std::pair<double, double>>& stepError) {
+    double mx = 0, my = 0;
+    for (const auto& [h, e] : stepError) {
+        mx += std::log(h);
+        my += std::log(e);
+    }
+    mx /= stepError.size();
+    my /= stepError.size();
+    double sxy = 0, sxx = 0;
+    for (const auto& [h, e] : stepError) {
+        sxy += (std::log(h) - mx) * (std::log(e) - my);
+        sxx += (std::log(h) - mx) * (std::log(h) - mx);
+    }
+    return sxy / sxx;
+}
+
+} // namespace
+
+class TestAcceptance : public QObject {
+    Q_OBJECT
+private slots:
+    // Towers, the pyramid, the slab, Jenga, and the 20-cube tower through FBX (Y up and Z up) and glTF.
+    // maxDrift: top body's horizontal drift; maxSpeed: any body in the last second (finite differences), < 0 = not
+    // part of the case; stand: every body ends within this distance of where it started ("stands").
+    void stacks_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<double>("maxDrift");
+        QTest::addColumn<double>("maxSpeed");
+        QTest::addColumn<double>("stand");
+        QTest::newRow("tower20.obj") << "tower20.obj" << 0.01 << 0.01 << 0.05;
+        QTest::newRow("tower20.fbx") << "tower20.fbx" << 0.01 << 0.01 << 0.05;
+        QTest::newRow("tower20_zup.fbx") << "tower20_zup.fbx" << 0.01 << 0.01 << 0.05;
+        QTest::newRow("tower20.glb") << "tower20.glb" << 0.01 << 0.01 << 0.05;
+        QTest::newRow("tower40.obj") << "tower40.obj" << 0.02 << -1.0 << 0.05;
+        QTest::newRow("pyramid20.obj") << "pyramid20.obj" << 0.01 << -1.0 << 0.05;
+        QTest::newRow("slab.obj") << "slab.obj" << 0.05 << -1.0 << 0.05;
+        QTest::newRow("jenga30.obj") << "jenga30.obj" << 0.05 << -1.0 << 0.05;
+    }
+    void stacks() {
+        QFETCH(QString, scene);
+        QFETCH(double, maxDrift);
+        QFETCH(double, maxSpeed);
+        QFETCH(double, stand);
+        BAKE_OR_FAIL(b, dataPath(scene));
+        const int top = b.csv.topBody();
+        const double drift = b.csv.horizontalDrift(top);
+        const double speed = b.csv.maxSpeedLastSecond();
+        const double moved = b.csv.maxDisplacement();
+        qInfo("%s: top '%s' drift %.3f mm (< %.0f mm), max speed in the last second %.4f cm/s, largest "
+              "displacement %.2f mm (stands: < %.0f mm)",
+              qPrintable(scene), qPrintable(b.csv.names[top]), 1e3 * drift, 1e3 * maxDrift, 1e2 * speed, 1e3 * moved,
+              1e3 * stand);
+        QVERIFY(drift < maxDrift);
+        if (maxSpeed > 0)
+            QVERIFY(speed < maxSpeed);
+        QVERIFY(moved < stand);
+        if (scene.endsWith(".obj")) {
+            int frame = 0;
+            QString body;
+            const double low = lowestVertexY(b.csv, dataPath(scene), &frame, &body);
+            qInfo("%s: lowest vertex y %.3f mm ('%s', frame %d)", qPrintable(scene), 1e3 * low, qPrintable(body),
+                  frame);
+            QVERIFY(low > -0.01); // the floor's top is y = 0
+        }
+    }
+
+    // 1 kg under 1,000 kg (Blender cubes with JSON masses, and JSON boxes), and a 1:10:100:1000 ladder: the order
+    // is kept and no contact is more than 1 cm deep at any frame. half: the boxes' half height.
+    void massRatio_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<double>("half");
+        QTest::newRow("mass_ratio.rlscene") << "mass_ratio.rlscene" << 0.25;
+        QTest::newRow("mass_pair_boxes.rlscene") << "mass_pair_boxes.rlscene" << 0.5;
+        QTest::newRow("mass_ladder.rlscene") << "mass_ladder.rlscene" << 0.25;
+    }
+    void massRatio() {
+        QFETCH(QString, scene);
+        QFETCH(double, half);
+        BAKE_OR_FAIL(b, dataPath(scene));
+        std::vector<int> order; // bottom to top at frame 0
+        for (int i = 0; i < b.csv.bodies; ++i)
+            if (!b.csv.anchor[i])
+                order.push_back(i);
+        std::sort(order.begin(), order.end(), [&](int l, int r) { return b.csv.at(0, l)[Y] < b.csv.at(0, r)[Y]; });
+        double deepest = 0.0, resting = 0.0, slide = 0.0;
+        int deepestFrame = 0;
+        for (int f = 0; f < b.csv.frames; ++f) {
+            double pen = half - b.csv.at(f, order[0])[Y]; // floor top at y = 0
+            for (size_t k = 1; k < order.size(); ++k) {
+                const Row &lo = b.csv.at(f, order[k - 1]), &hi = b.csv.at(f, order[k]);
+                pen = std::max(pen, 2.0 * half - (hi[Y] - lo[Y]));
+                slide = std::max(slide, std::hypot(hi[X] - lo[X], hi[Z] - lo[Z]));
+            }
+            if (pen > deepest) {
+                deepest = pen;
+                deepestFrame = f;
+            }
+            if (f == b.csv.last())
+                resting = pen;
+        }
+        bool ordered = true;
+        for (size_t k = 1; k < order.size(); ++k)
+            ordered = ordered && b.csv.at(b.csv.last(), order[k])[Y] > b.csv.at(b.csv.last(), order[k - 1])[Y] + half;
+        qInfo("%s: order kept %s, deepest contact %.2f mm at frame %d, %.2f mm at rest (< 10 mm), largest sideways "
+              "offset between neighbours %.2f mm",
+              qPrintable(scene), ordered ? "yes" : "NO", 1e3 * deepest, deepestFrame, 1e3 * resting, 1e3 * slide);
+        QVERIFY(ordered);
+        QVERIFY(slide < 0.05);
+        QVERIFY(deepest < 0.01);
+    }
+
+    // A 0.5 m block on a 30 degree ramp. mu 0.7 (Concrete on Concrete straight from the OBJ, and as a JSON
+    // override): drift < 1 mm over 10 s. mu 0.3: distance at t = 1 s within 2 % of 1/2 g (sin - mu cos) t^2.
+    void slope_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<double>("mu");
+        QTest::newRow("slope30.obj (Concrete, mu 0.7)") << "slope30.obj" << 0.7;
+        QTest::newRow("slope30_mu07.rlscene") << "slope30_mu07.rlscene" << 0.7;
+        QTest::newRow("slope30_mu03.rlscene") << "slope30_mu03.rlscene" << 0.3;
+    }
+    void slope() {
+        QFETCH(QString, scene);
+        QFETCH(double, mu);
+        BAKE_OR_FAIL(b, dataPath(scene));
+        const int block = b.csv.byName("Block");
+        QVERIFY(block >= 0);
+        auto distance = [&](int frame) {
+            const Row &a = b.csv.at(0, block), &c = b.csv.at(frame, block);
+            return std::sqrt((c[X] - a[X]) * (c[X] - a[X]) + (c[Y] - a[Y]) * (c[Y] - a[Y]) +
+                             (c[Z] - a[Z]) * (c[Z] - a[Z]));
+        };
+        const double theta = 30.0 * M_PI / 180.0;
+        const double accel = kG * (std::sin(theta) - mu * std::cos(theta));
+        if (accel <= 0) {
+            const double drift = distance(b.csv.last());
+            qInfo("%s: mu %.1f, drift over 10 s %.4f mm (< 1 mm)", qPrintable(scene), mu, 1e3 * drift);
+            QVERIFY(drift < 0.001);
+        } else {
+            const double d = distance(60), exact = 0.5 * accel;
+            qInfo("%s: mu %.1f, slid %.5f m in 1 s, closed form %.5f m (%+.3f %%, within 2 %%)", qPrintable(scene), mu,
+                  d, exact, 100.0 * (d - exact) / exact);
+            QVERIFY(std::abs(d - exact) < 0.02 * exact);
+        }
+    }
+
+    // Drop with e = 0.5 from h0 = 5 m: the first three apex heights (frame maxima of the centre, minus the half
+    // height) within 3 % of e^(2n) h0. A Blender UV sphere (r 0.1) and a Blender 0.2 m cube falling face down.
+    void drop_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<double>("half");
+        QTest::newRow("drop_e05.rlscene (UV sphere)") << "drop_e05.rlscene" << 0.1;
+        QTest::newRow("drop_cube_e05.rlscene (cube)") << "drop_cube_e05.rlscene" << 0.1;
+    }
+    void drop() {
+        QFETCH(QString, scene);
+        QFETCH(double, half);
+        BAKE_OR_FAIL(b, dataPath(scene));
+        const int body = b.csv.topBody();
+        const double h0 = b.csv.at(0, body)[Y] - half, e = 0.5;
+        std::vector<double> apexes;
+        for (int f = 2; f < b.csv.last(); ++f) {
+            const double y = b.csv.at(f, body)[Y];
+            if (b.csv.at(f - 1, body)[Y] < y && y >= b.csv.at(f + 1, body)[Y])
+                apexes.push_back(y - half);
+        }
+        double spin = 0.0;
+        for (int f = 0; f < b.csv.frames; ++f) {
+            const Row& r = b.csv.at(f, body);
+            spin = std::max(spin, std::sqrt(r[WX] * r[WX] + r[WY] * r[WY] + r[WZ] * r[WZ]));
+        }
+        QVERIFY2(apexes.size() >= 3, "fewer than three bounces");
+        QString line;
+        bool pass = true;
+        for (int n = 1; n <= 3; ++n) {
+            const double expected = std::pow(e, 2.0 * n) * h0, got = apexes[n - 1];
+            const double rel = (got - expected) / expected;
+            line += QString::asprintf(" apex %d %.5f m vs %.5f m (%+.2f %%)", n, got, expected, 100.0 * rel);
+            pass = pass && std::abs(rel) < 0.03;
+        }
+        qInfo("%s: h0 %.3f m;%s (within 3 %%); largest spin %.3f rad/s", qPrintable(scene), h0, qPrintable(line), spin);
+        QVERIFY2(pass, qPrintable(line));
+    }
+
+    // Projectiles in JSON scenes: a lob against the exact parabola until just before it lands, a 0.1 m steel cube
+    // at 300 m/s into a 5 cm anchor wall (must not pass it), a 1,000 kg ball at 10 m/s into a 1 kg box.
+    void projectileLob() {
+        BAKE_OR_FAIL(b, dataPath("projectile_lob.rlscene"));
+        const int shot = b.csv.byName("Shot");
+        const Row& s0 = b.csv.at(0, shot);
+        double worst = 0.0;
+        for (int f = 0; f <= 96; ++f) { // lands at t = 1.75 s; 96 frames = 1.6 s
+            const double t = f / 60.0;
+            const Row& r = b.csv.at(f, shot);
+            const double ex = s0[X] + s0[VX] * t, ey = s0[Y] + s0[VY] * t - 0.5 * kG * t * t;
+            worst = std::max(worst, std::hypot(r[X] - ex, r[Y] - ey));
+        }
+        // First order in the step: an Euler step of one whole frame would be off by 1/2 g t dt = 0.131 m at 1.6 s.
+        const double frameEuler = 0.5 * kG * 1.6 / 60.0;
+        qInfo("projectile_lob: largest position error in 1.6 s of flight %.5f m (one-frame Euler bound %.4f m)", worst,
+              frameEuler);
+        QVERIFY(worst < frameEuler);
+    }
+    void projectileWall() {
+        BAKE_OR_FAIL(b, dataPath("projectile_wall.rlscene"));
+        const int bullet = b.csv.byName("Bullet");
+        double furthest = -1e300;
+        for (int f = 0; f < b.csv.frames; ++f)
+            furthest = std::max(furthest, b.csv.at(f, bullet)[X]);
+        const Row& after = b.csv.at(2, bullet);
+        qInfo("projectile_wall: bullet centre got to x = %.5f m (wall face 4.975 m, centre at contact 4.925 m); "
+              "vx two frames later %.3f m/s (Steel e 0.6 would give -180)",
+              furthest, after[VX]);
+        QVERIFY(furthest < 4.975); // its centre never reaches the wall's face
+        QVERIFY(after[VX] <= 0.0);
+    }
+    void projectileHeavy() {
+        BAKE_OR_FAIL(b, dataPath("projectile_heavy.rlscene"));
+        const int box = b.csv.byName("Box"), ball = b.csv.byName("Ball");
+        double boxLow = 1e300, ballLow = 1e300;
+        for (int f = 0; f < b.csv.frames; ++f) {
+            boxLow = std::min(boxLow, b.csv.at(f, box)[Y]);
+            ballLow = std::min(ballLow, b.csv.at(f, ball)[Y]);
+        }
+        qInfo("projectile_heavy: lowest box centre %.4f m (half 0.1), lowest ball centre %.4f m (radius 0.5), box "
+              "pushed to x = %.3f m",
+              boxLow, ballLow, b.csv.at(b.csv.last(), box)[X]);
+        QVERIFY(boxLow > 0.1 - 0.01);
+        QVERIFY(ballLow > 0.5 - 0.01);
+        QVERIFY(b.csv.at(b.csv.last(), box)[X] > 3.2); // it was hit
+    }
+
+    // Mixed shapes (cubes, a stack, UV spheres, cylinders, cones, an icosphere, a torus, Suzanne): no NaN, nothing
+    // under the floor, everything at rest in the last second (< 1 cm/s, the 1,000-boxes criterion).
+    void mixedShapes() {
+        BAKE_OR_FAIL(b, dataPath("mixed_shapes.obj"));
+        int frame = 0;
+        QString body;
+        const double low = lowestVertexY(b.csv, dataPath("mixed_shapes.obj"), &frame, &body);
+        const double speed = b.csv.maxSpeedLastSecond();
+        qInfo("mixed_shapes: lowest vertex y %.3f mm ('%s', frame %d), max speed in the last second %.4f cm/s, "
+              "largest displacement %.1f mm",
+              1e3 * low, qPrintable(body), frame, 1e2 * speed, 1e3 * b.csv.maxDisplacement());
+        QVERIFY(low > -0.01);
+        QVERIFY(speed < 0.01);
+    }
+
+    // Re-bakes hash identically, and so does a bake on 2 threads (CSV and .bake).
+    void rebakeHashes_data() {
+        QTest::addColumn<QString>("scene");
+        for (const char* s : {"tower40.obj", "jenga30.obj", "mixed_shapes.obj", "drop_cube_e05.rlscene"})
+            QTest::newRow(s) << QString::fromLatin1(s);
+    }
+    void rebakeHashes() {
+        QFETCH(QString, scene);
+        const Bake a = bake(dataPath(scene), {}, false);
+        const Bake b = bake(dataPath(scene), {}, false);
+        const Bake c = bake(dataPath(scene), {"--threads", "2"}, false);
+        QCOMPARE(a.run.exitCode, 0);
+        QVERIFY(!a.csvHash.isEmpty() && !a.bakeHash.isEmpty());
+        qInfo("%s: csv sha256 %s / %s / %s (threads 2)", qPrintable(scene), a.csvHash.left(16).constData(),
+              b.csvHash.left(16).constData(), c.csvHash.left(16).constData());
+        QCOMPARE(b.csvHash, a.csvHash);
+        QCOMPARE(b.bakeHash, a.bakeHash);
+        QCOMPARE(c.csvHash, a.csvHash);
+        QCOMPARE(c.bakeHash, a.bakeHash);
+    }
+
+    // A floor renamed "Anchor" in Blender (mesh still "Plane") is exported by the 3.4 OBJ exporter as
+    // "o Anchor_Plane". Today it fails to load (IMPORT-1 in /work/notes/acceptance.md); it must at least fail with
+    // a message naming the file and the object, and exit 1.
+    void blenderRenamedFloor() {
+        const rl::test::CliRun r = rl::test::runCli({"info", dataPath("tower20_legacy_names.obj")});
+        qInfo("tower20_legacy_names.obj: exit %d, %s", r.exitCode, r.err.trimmed().constData());
+        if (r.exitCode == 0) {
+            QVERIFY(r.out.contains("1 anchors")); // once the importer accepts the exporter's form
+            return;
+        }
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains("tower20_legacy_names.obj"));
+        QVERIFY(r.err.contains("Anchor_Plane"));
+    }
+
+    // `rigidlab-cli accuracy --csv`: refit the oscillator's convergence orders from the CSV. Expected 1, 1, 2, 4
+    // within 0.15. Rows flagged in an `in_fit` column are used when the CSV has one, else every row.
+    void accuracyOrders() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("accuracy.csv");
+        const rl::test::CliRun r = rl::test::runCli({"accuracy", "--csv", path});
+        QCOMPARE(r.exitCode, 0);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QStringList header = QString::fromUtf8(f.readLine()).trimmed().split(',');
+        const qsizetype cProblem = header.indexOf("problem"), cIntegrator = header.indexOf("integrator"),
+                        cSteps = header.indexOf("steps"), cStep = header.indexOf("step"),
+                        cError = header.indexOf("error"), cInFit = header.indexOf("in_fit");
+        QVERIFY(cProblem >= 0 && cIntegrator >= 0 && cSteps >= 0 && cStep >= 0 && cError >= 0);
+        std::map<QString, std::vector<std::pair<double, double>>> fit, original;
+        while (!f.atEnd()) {
+            const QStringList c = QString::fromUtf8(f.readLine()).trimmed().split(',');
+            if (c.size() != header.size() || c[cProblem] != QLatin1String("oscillator"))
+                continue;
+            const std::pair<double, double> point{c[cStep].toDouble(), c[cError].toDouble()};
+            if (cInFit < 0 || c[cInFit] == QLatin1String("1"))
+                fit[c[cIntegrator]].push_back(point);
+            const int steps = c[cSteps].toInt();
+            if (steps == 10 || steps == 20 || steps == 40)
+                original[c[cIntegrator]].push_back(point);
+        }
+        const std::map<QString, double> expected{
+            {"explicit-euler", 1.0}, {"symplectic-euler", 1.0}, {"verlet", 2.0}, {"rk4", 4.0}};
+        for (const auto& [integrator, order] : expected) {
+            QVERIFY2(fit[integrator].size() >= 3, qPrintable(integrator));
+            const double p = fitOrder(fit[integrator]);
+            const double p3 = original[integrator].size() == 3 ? fitOrder(original[integrator]) : std::nan("");
+            qInfo("accuracy: %s order %.3f from %zu rows (expected %.0f +- 0.15); from 10/20/40 steps only %.3f",
+                  qPrintable(integrator), p, fit[integrator].size(), order, p3);
+            QVERIFY(std::abs(p - order) < 0.15);
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestAcceptance)
+#include "tst_acceptance.moc"

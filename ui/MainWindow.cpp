@@ -29,9 +29,12 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QScreen>
 #include <QSettings>
+#include <QShowEvent>
 #include <QSortFilterProxyModel>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 #include <QTreeView>
 #include <QUndoView>
@@ -108,9 +111,12 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
 
     QSettings settings;
-    if (!restoreGeometry(settings.value("mainwindow/geometry").toByteArray()))
-        resize(1280, 800);
+    m_restoredGeometry = restoreGeometry(settings.value("mainwindow/geometry").toByteArray());
+    if (!m_restoredGeometry)
+        resize(1280, 800); // placed on its screen at the first show (showEvent)
     restoreState(settings.value("mainwindow/state").toByteArray());
+    // The viewport holds the keyboard from the start, so that Space, A, G or the arrows act before any click.
+    m_viewport->setFocus(Qt::OtherFocusReason);
     updateTitle();
     updateStatus();
 }
@@ -315,6 +321,30 @@ void MainWindow::dropEvent(QDropEvent* event) {
         event->acceptProposedAction();
         m_files->openDroppedFiles(paths);
     }
+}
+
+QRect MainWindow::firstGeometry(const QRect& available) {
+    QSize size = available.size();
+    if (size.width() > 1440 || size.height() > 900)
+        size = (QSizeF(size) * 0.9).toSize().expandedTo(QSize(1280, 800)).boundedTo(available.size());
+    QRect rect(QPoint(0, 0), size);
+    rect.moveCenter(available.center());
+    return rect;
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+    QMainWindow::showEvent(event);
+    if (m_shownOnce)
+        return;
+    m_shownOnce = true;
+    if (!m_restoredGeometry && screen())
+        setGeometry(firstGeometry(screen()->availableGeometry()));
+    // Take the keyboard once shown: with no window manager (a scripted session under Xvfb) nothing else would give
+    // the window the input focus, and every key would be lost until the first click.
+    QTimer::singleShot(0, this, [this] {
+        activateWindow();
+        raise();
+    });
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

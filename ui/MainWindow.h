@@ -58,6 +58,10 @@ public:
     // message box when it fails.
     bool openFile(const QString& path);
 
+    // The window's first geometry, used while no geometry is saved: all of a small screen's available area, 90 % of
+    // a larger one's, centred on it.
+    static QRect firstGeometry(const QRect& available);
+
 signals:
     void selectionChanged(const QList<int>& bodies);
     // The viewport went back to the document's edit pose (after any scene change).
@@ -65,6 +69,7 @@ signals:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
     bool eventFilter(QObject* watched, QEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
@@ -97,6 +102,8 @@ private:
     OverlayController* m_overlays = nullptr;
     QList<int> m_selection;
     bool m_syncingSelection = false;
+    bool m_restoredGeometry = false;
+    bool m_shownOnce = false;
 };
 
 } // namespace rl

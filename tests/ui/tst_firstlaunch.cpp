@@ -1,0 +1,94 @@
+// The editor as a new user meets it: no settings yet, started from the command line under an X server with no window
+// manager (as in a scripted review), keys pressed before anything was clicked.
+#include "MainWindow.h"
+#include "document/SceneDocument.h"
+#include "ui/GuiTestSetup.h"
+#include "viewport/Viewport.h"
+
+#include <QApplication>
+#include <QDockWidget>
+#include <QScreen>
+#include <QSettings>
+#include <QTest>
+
+class TestFirstLaunch : public QObject {
+    Q_OBJECT
+public:
+    static void initMain() { rl::test::prepareGuiTest(); }
+
+private slots:
+    void init() { QSettings().clear(); }
+    void cleanup() { QSettings().clear(); }
+
+    // The window takes the keyboard when it appears and the viewport holds the focus, so that Space, A or the arrows
+    // act at once, without a click first. A single-key action (A: select all) only fires when the viewport has the
+    // focus, so this checks both.
+    void keysWorkBeforeAnyClick() {
+        rl::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/stack.obj")));
+        QTRY_VERIFY_WITH_TIMEOUT(window.isActiveWindow(), 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(QApplication::focusWidget(), static_cast<QWidget*>(window.viewport()), 10000);
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_A);
+        QCOMPARE(window.selectedBodies().size(), window.document()->bodyCount());
+    }
+
+    // The first geometry for common screens: a small screen is filled, a large one gets most of it, centred, never
+    // less than 1280x800 where that fits.
+    void firstGeometry_data() {
+        QTest::addColumn<QRect>("available");
+        QTest::addColumn<QRect>("expected");
+        QTest::newRow("1280x800") << QRect(0, 0, 1280, 800) << QRect(0, 0, 1280, 800);
+        QTest::newRow("1366x768 with a panel") << QRect(0, 0, 1366, 740) << QRect(0, 0, 1366, 740);
+        QTest::newRow("1920x1080") << QRect(0, 0, 1920, 1080) << QRect(96, 54, 1728, 972);
+        QTest::newRow("1920x1080 second screen") << QRect(1920, 0, 1920, 1080) << QRect(2016, 54, 1728, 972);
+        QTest::newRow("2560x1440") << QRect(0, 0, 2560, 1440) << QRect(128, 72, 2304, 1296);
+        QTest::newRow("1024x600") << QRect(0, 0, 1024, 600) << QRect(0, 0, 1024, 600);
+    }
+    void firstGeometry() {
+        QFETCH(QRect, available);
+        QFETCH(QRect, expected);
+        QCOMPARE(rl::MainWindow::firstGeometry(available), expected);
+    }
+
+    // With no saved geometry the window fills most of the screen (all of a small one), lies on it, and no dock is
+    // squashed: the timeline is at the bottom and visible, the outliner and inspector have room, the viewport most.
+    void firstLayoutIsSensible() {
+        rl::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/mixed.obj")));
+        const QRect available = window.screen()->availableGeometry();
+        const QRect frame = window.frameGeometry();
+        QVERIFY2(available.contains(frame), qPrintable(QStringLiteral("window %1,%2 %3x%4 off the screen %5x%6")
+                                                           .arg(frame.x())
+                                                           .arg(frame.y())
+                                                           .arg(frame.width())
+                                                           .arg(frame.height())
+                                                           .arg(available.width())
+                                                           .arg(available.height())));
+        QVERIFY2(frame.width() >= std::min(1280, available.width()) && frame.width() >= available.width() * 8 / 10 &&
+                     frame.height() >= available.height() * 8 / 10,
+                 qPrintable(QStringLiteral("window %1x%2 on a %3x%4 screen")
+                                .arg(frame.width())
+                                .arg(frame.height())
+                                .arg(available.width())
+                                .arg(available.height())));
+        auto* timeline = window.findChild<QDockWidget*>("TimelineDock");
+        QVERIFY(timeline);
+        QVERIFY(timeline->isVisible());
+        QCOMPARE(window.dockWidgetArea(timeline), Qt::BottomDockWidgetArea);
+        QVERIFY(timeline->height() >= 80);
+        auto* outliner = window.findChild<QDockWidget*>("OutlinerDock");
+        auto* inspector = window.findChild<QDockWidget*>("InspectorDock");
+        QVERIFY(outliner && inspector);
+        QVERIFY(outliner->isVisible() && inspector->isVisible());
+        QVERIFY2(outliner->width() >= 220, qPrintable(QString::number(outliner->width())));
+        QVERIFY2(inspector->width() >= 300, qPrintable(QString::number(inspector->width())));
+        QVERIFY(window.viewport()->width() > inspector->width());
+    }
+};
+
+QTEST_MAIN(TestFirstLaunch)
+#include "tst_firstlaunch.moc"

@@ -1,0 +1,317 @@
+// The German translation: it is compiled into the editor, it is complete for the current sources (lupdate is run
+// over ui/ and app/rigidlab/ into a scratch file and every string must have a finished German translation), every
+// translation keeps the placeholders, tags and accelerator of its source, plurals have both German forms and render
+// with the right one, the main window comes up in German when the translator is installed, and in German no two items
+// of a menu (nor two titles of the menu bar) share an accelerator letter.
+#include "MainWindow.h"
+#include "ui/GuiTestSetup.h"
+
+#include <QMenu>
+#include <QMenuBar>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QSet>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTranslator>
+#include <QXmlStreamReader>
+
+#include <algorithm>
+
+namespace {
+
+struct TsMessage {
+    QString context;
+    QString source;
+    bool finished = false; // a translation is present and not marked unfinished or vanished
+    bool numerus = false;
+    QStringList forms; // the translation, or its plural forms
+};
+
+// Reads a Qt Linguist .ts file: one entry per message, keyed by context and source text.
+QList<TsMessage> readTs(const QString& path, QString* error) {
+    QList<TsMessage> messages;
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error = path + QStringLiteral(": cannot open");
+        return messages;
+    }
+    QXmlStreamReader xml(&file);
+    QString context;
+    TsMessage message;
+    while (!xml.atEnd()) {
+        xml.readNext();
+        if (xml.isStartElement()) {
+            if (xml.name() == QLatin1String("name")) {
+                context = xml.readElementText();
+            } else if (xml.name() == QLatin1String("message")) {
+                message = TsMessage{context,
+                                    QString(),
+                                    false,
+                                    xml.attributes().value(QLatin1String("numerus")) == QLatin1String("yes"),
+                                    {}};
+            } else if (xml.name() == QLatin1String("source")) {
+                message.source = xml.readElementText();
+            } else if (xml.name() == QLatin1String("translation")) {
+                const QString type = xml.attributes().value(QLatin1String("type")).toString();
+                if (message.numerus) {
+                    while (xml.readNextStartElement())
+                        message.forms.append(xml.readElementText());
+                } else {
+                    message.forms.append(xml.readElementText());
+                }
+                message.finished = type.isEmpty() && !message.forms.isEmpty() &&
+                                   std::none_of(message.forms.cbegin(), message.forms.cend(),
+                                                [](const QString& f) { return f.trimmed().isEmpty(); });
+            }
+        } else if (xml.isEndElement() && xml.name() == QLatin1String("message")) {
+            messages.append(message);
+        }
+    }
+    if (xml.hasError())
+        *error = QStringLiteral("%1:%2: %3").arg(path).arg(xml.lineNumber()).arg(xml.errorString());
+    return messages;
+}
+
+const QString kGermanTs = QStringLiteral(RL_SOURCE_DIR "/translations/rigidlab_de.ts");
+
+// %1..%99, %L1.., %n: the arguments a translation must keep.
+QStringList placeholders(const QString& text) {
+    static const QRegularExpression re(QStringLiteral("%L?\\d+|%n"));
+    QStringList found;
+    for (auto it = re.globalMatch(text); it.hasNext();)
+        found.append(it.next().captured());
+    found.removeDuplicates();
+    found.sort();
+    return found;
+}
+
+// Rich-text tags (<b>, <br>, ...); "<opened scene>" and the like are text, not tags.
+QStringList tags(const QString& text) {
+    static const QRegularExpression re(QStringLiteral("</?(?:b|i|u|br|p|a|span|tt|code|small|big|font|ul|ol|li|"
+                                                      "table|tr|td|h[1-6])\\b[^>]*>"));
+    QStringList found;
+    for (auto it = re.globalMatch(text); it.hasNext();)
+        found.append(it.next().captured());
+    found.sort();
+    return found;
+}
+
+// The accelerator letter of a menu text ("Speichern &unter …" -> 'u'), lower case; a null QChar if none.
+QChar mnemonic(const QString& text) {
+    for (qsizetype i = 0; i + 1 < text.size(); ++i) {
+        if (text[i] != QLatin1Char('&'))
+            continue;
+        if (text[i + 1] == QLatin1Char('&')) {
+            ++i; // "&&" is a literal ampersand
+            continue;
+        }
+        return text[i + 1].toLower();
+    }
+    return QChar();
+}
+
+// Lists every pair of visible items that share an accelerator letter, in the menu and its submenus.
+void collectClashes(const QString& where, const QList<QAction*>& actions, QStringList* clashes) {
+    QHash<QChar, QString> seen;
+    for (QAction* action : actions) {
+        if (action->isSeparator() || !action->isVisible())
+            continue;
+        const QChar letter = mnemonic(action->text());
+        if (!letter.isNull()) {
+            if (seen.contains(letter))
+                clashes->append(QStringLiteral("%1: '%2' in \"%3\" and \"%4\"")
+                                    .arg(where, letter, seen.value(letter), action->text()));
+            else
+                seen.insert(letter, action->text());
+        }
+        if (QMenu* sub = action->menu())
+            collectClashes(where + QStringLiteral(" > ") + sub->title(), sub->actions(), clashes);
+    }
+}
+
+} // namespace
+
+class TestTranslations : public QObject {
+    Q_OBJECT
+public:
+    static void initMain() { rl::test::prepareGuiTest(); }
+
+private slots:
+    void germanFileIsComplete() {
+        QString error;
+        const QList<TsMessage> messages = readTs(kGermanTs, &error);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        QVERIFY(messages.size() > 100);
+        QStringList missing;
+        for (const TsMessage& m : messages)
+            if (!m.finished)
+                missing.append(m.context + QStringLiteral(": ") + m.source);
+        QVERIFY2(missing.isEmpty(), qPrintable(missing.join(QLatin1Char('\n'))));
+    }
+
+#ifdef RL_LUPDATE_PATH
+    void germanFileCoversTheSources() {
+        QTemporaryDir scratch;
+        QVERIFY(scratch.isValid());
+        const QString fresh = scratch.filePath(QStringLiteral("fresh.ts"));
+        QProcess lupdate;
+        lupdate.start(QStringLiteral(RL_LUPDATE_PATH),
+                      {QStringLiteral("-silent"), QStringLiteral("-locations"), QStringLiteral("none"),
+                       QStringLiteral(RL_SOURCE_DIR "/ui"), QStringLiteral(RL_SOURCE_DIR "/app/rigidlab"),
+                       QStringLiteral("-ts"), fresh});
+        QVERIFY(lupdate.waitForFinished(120000));
+        QCOMPARE(lupdate.exitCode(), 0);
+        QString error;
+        const QList<TsMessage> current = readTs(fresh, &error);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        QVERIFY(current.size() > 100);
+        QSet<QString> translated;
+        for (const TsMessage& m : readTs(kGermanTs, &error))
+            if (m.finished)
+                translated.insert(m.context + QLatin1Char('\x1f') + m.source);
+        QStringList missing;
+        for (const TsMessage& m : current)
+            if (!translated.contains(m.context + QLatin1Char('\x1f') + m.source))
+                missing.append(m.context + QStringLiteral(": ") + m.source);
+        QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("untranslated strings (run the update_translations "
+                                                              "target and translate them):\n") +
+                                               missing.join(QLatin1Char('\n'))));
+    }
+#endif
+
+    void translationsKeepPlaceholdersTagsAndAccelerators() {
+        QString error;
+        const QList<TsMessage> messages = readTs(kGermanTs, &error);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        QStringList wrong;
+        for (const TsMessage& m : messages) {
+            if (!m.finished)
+                continue;
+            if (m.numerus && m.forms.size() != 2)
+                wrong.append(QStringLiteral("%1: %2: German plurals need 2 forms, found %3")
+                                 .arg(m.context, m.source)
+                                 .arg(m.forms.size()));
+            for (const QString& form : m.forms) {
+                QStringList expected = placeholders(m.source);
+                QStringList got = placeholders(form);
+                if (m.numerus) { // a singular form may spell out the number
+                    expected.removeAll(QStringLiteral("%n"));
+                    got.removeAll(QStringLiteral("%n"));
+                }
+                if (got != expected)
+                    wrong.append(QStringLiteral("%1: %2: placeholders %3 became %4 in \"%5\"")
+                                     .arg(m.context, m.source, expected.join(QLatin1Char(' ')),
+                                          got.join(QLatin1Char(' ')), form));
+                if (tags(form) != tags(m.source))
+                    wrong.append(QStringLiteral("%1: %2: tags differ in \"%3\"").arg(m.context, m.source, form));
+                if (mnemonic(form).isNull() != mnemonic(m.source).isNull())
+                    wrong.append(
+                        QStringLiteral("%1: %2: accelerator added or lost in \"%3\"").arg(m.context, m.source, form));
+            }
+        }
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong.join(QLatin1Char('\n'))));
+    }
+
+    // main.cpp loads the translator with QTranslator::load(locale, "rigidlab", "_", ":/i18n"); a German system
+    // locale (any region) or the "de" setting must find the German file, English needs none.
+    void languageSettingFindsTheTranslation_data() {
+        QTest::addColumn<QString>("locale");
+        QTest::addColumn<bool>("found");
+        QTest::newRow("setting de") << QStringLiteral("de") << true;
+        QTest::newRow("system de_DE") << QStringLiteral("de_DE") << true;
+        QTest::newRow("system de_AT") << QStringLiteral("de_AT") << true;
+        QTest::newRow("setting en") << QStringLiteral("en") << false;
+    }
+    void languageSettingFindsTheTranslation() {
+        QFETCH(QString, locale);
+        QFETCH(bool, found);
+        QTranslator translator;
+        QCOMPARE(
+            translator.load(QLocale(locale), QStringLiteral("rigidlab"), QStringLiteral("_"), QStringLiteral(":/i18n")),
+            found);
+        if (found)
+            QCOMPARE(translator.language(), QStringLiteral("de_DE"));
+    }
+
+    void pluralsRenderInGerman_data() {
+        QTest::addColumn<QByteArray>("context");
+        QTest::addColumn<QByteArray>("source");
+        QTest::addColumn<int>("n");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("1 file") << QByteArray("rl::FileController") << QByteArray("%n files") << 1
+                                << QStringLiteral("1 Datei");
+        QTest::newRow("5 files") << QByteArray("rl::FileController") << QByteArray("%n files") << 5
+                                 << QStringLiteral("5 Dateien");
+        QTest::newRow("0 files") << QByteArray("rl::FileController") << QByteArray("%n files") << 0
+                                 << QStringLiteral("0 Dateien");
+        QTest::newRow("1 frame baking") << QByteArray("rl::SimulationController") << QByteArray("Baking %n frames…")
+                                        << 1 << QStringLiteral("1 Frame wird gebacken …");
+        QTest::newRow("250 frames baking") << QByteArray("rl::SimulationController") << QByteArray("Baking %n frames…")
+                                           << 250 << QStringLiteral("250 Frames werden gebacken …");
+        QTest::newRow("1 body cannot") << QByteArray("rl::InspectorWidget")
+                                       << QByteArray("%n bodies cannot be simulated") << 1
+                                       << QStringLiteral("1 Körper kann nicht simuliert werden");
+        QTest::newRow("5 bodies cannot") << QByteArray("rl::InspectorWidget")
+                                         << QByteArray("%n bodies cannot be simulated") << 5
+                                         << QStringLiteral("5 Körper können nicht simuliert werden");
+    }
+    void pluralsRenderInGerman() {
+        QFETCH(QByteArray, context);
+        QFETCH(QByteArray, source);
+        QFETCH(int, n);
+        QFETCH(QString, expected);
+        QTranslator translator;
+        QVERIFY(translator.load(QStringLiteral(":/i18n/rigidlab_de.qm")));
+        QCoreApplication::installTranslator(&translator);
+        const QString text = QCoreApplication::translate(context.constData(), source.constData(), nullptr, n);
+        QCoreApplication::removeTranslator(&translator);
+        QCOMPARE(text, expected);
+    }
+
+    // Alt+letter opens a menu of the bar and a letter picks an item of an open menu: in German every menu's
+    // letters are unique, and no title of the bar takes a letter that an Alt+letter shortcut already uses.
+    void germanMenusHaveUniqueAccelerators() {
+        QTranslator translator;
+        QVERIFY(translator.load(QStringLiteral(":/i18n/rigidlab_de.qm")));
+        QCoreApplication::installTranslator(&translator);
+        QStringList clashes;
+        {
+            rl::MainWindow window;
+            const QList<QAction*> bar = window.menuBar()->actions();
+            QVERIFY(bar.size() >= 8);
+            collectClashes(QStringLiteral("menu bar"), bar, &clashes);
+            QSet<QChar> altLetters;
+            for (QAction* action : window.findChildren<QAction*>())
+                for (const QKeySequence& shortcut : action->shortcuts())
+                    if (shortcut.count() == 1 && shortcut[0].keyboardModifiers() == Qt::AltModifier &&
+                        shortcut[0].key() >= Qt::Key_A && shortcut[0].key() <= Qt::Key_Z)
+                        altLetters.insert(QChar(u'a' + (shortcut[0].key() - Qt::Key_A)));
+            QVERIFY(altLetters.contains(QLatin1Char('a'))); // Alt+A toggles the anchor
+            for (QAction* title : bar)
+                if (altLetters.contains(mnemonic(title->text())))
+                    clashes.append(QStringLiteral("menu bar: \"%1\" takes Alt+%2, a shortcut")
+                                       .arg(title->text(), mnemonic(title->text()).toUpper()));
+        }
+        QCoreApplication::removeTranslator(&translator);
+        QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1Char('\n'))));
+    }
+
+    void mainWindowComesUpInGerman() {
+        QTranslator translator;
+        QVERIFY(translator.load(QStringLiteral(":/i18n/rigidlab_de.qm")));
+        QCoreApplication::installTranslator(&translator);
+        {
+            rl::MainWindow window;
+            QCOMPARE(window.menu(rl::MainWindow::Menu::File)->title(), QStringLiteral("&Datei"));
+            QCOMPARE(window.menu(rl::MainWindow::Menu::Edit)->title(), QStringLiteral("&Bearbeiten"));
+            QCOMPARE(window.menu(rl::MainWindow::Menu::Help)->title(), QStringLiteral("&Hilfe"));
+        }
+        QCoreApplication::removeTranslator(&translator);
+        rl::MainWindow english;
+        QCOMPARE(english.menu(rl::MainWindow::Menu::File)->title(), QStringLiteral("&File"));
+    }
+};
+
+QTEST_MAIN(TestTranslations)
+#include "tst_translations.moc"

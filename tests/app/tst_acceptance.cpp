@@ -60,6 +60,7 @@ private slots:
         QTest::newRow("tower20.fbx") << "tower20.fbx" << 0.01 << 0.01 << 0.05;
         QTest::newRow("tower20_zup.fbx") << "tower20_zup.fbx" << 0.01 << 0.01 << 0.05;
         QTest::newRow("tower20.glb") << "tower20.glb" << 0.01 << 0.01 << 0.05;
+        QTest::newRow("tower20_2m.obj (Blender's default 2 m cubes)") << "tower20_2m.obj" << 0.01 << 0.01 << 0.05;
         QTest::newRow("tower40.obj") << "tower40.obj" << 0.02 << -1.0 << 0.05;
         QTest::newRow("pyramid20.obj") << "pyramid20.obj" << 0.01 << -1.0 << 0.05;
         QTest::newRow("slab.obj") << "slab.obj" << 0.05 << -1.0 << 0.05;

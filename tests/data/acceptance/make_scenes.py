@@ -118,6 +118,13 @@ bpy.ops.export_scene.gltf(filepath=os.path.join(OUT, "tower20.glb"))
 tower(40, box_floor=True)
 export_obj("tower40.obj")
 
+# 20 of Blender's default cubes (2 m, primitive_cube_add() with no size) on a 60 m floor plane.
+reset()
+floor_plane(size=60)
+for i in range(20):
+    cube("Cube", size=2.0, location=(0, 0, 1 + 2 * i))
+export_obj("tower20_2m.obj")
+
 # The tower a user gets after renaming only the plane object to Anchor: the exporter writes "o Anchor_Plane".
 reset()
 floor_plane(rename_mesh=False)

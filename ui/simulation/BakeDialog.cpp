@@ -43,7 +43,10 @@ BakeDialog::BakeDialog(double fps, int lastFrame, QWidget* parent) : QDialog(par
     auto* range = new QHBoxLayout;
     range->addWidget(new QLabel(tr("0 to"), this));
     range->addWidget(m_lastFrame, 1);
-    form->addRow(tr("&Frames:"), range);
+    // A label made by addRow(QString, QLayout*) has no buddy and would show the ampersand.
+    auto* framesLabel = new QLabel(tr("&Frames:"), this);
+    framesLabel->setBuddy(m_lastFrame);
+    form->addRow(framesLabel, range);
     form->addRow(tr("Frame rate:"), new QLabel(tr("%1 Hz (the scene's world settings)").arg(fps), this));
     layout->addLayout(form);
 

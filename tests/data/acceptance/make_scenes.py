@@ -258,6 +258,13 @@ write_json("mass_pair_boxes.rlscene", scene([floor,
     {"name": "Light", "shape": {"box": [0.5, 0.5, 0.5]}, "position": [0, 0.5, 0], "mass": 1.0},
     {"name": "Heavy", "shape": {"box": [0.5, 0.5, 0.5]}, "position": [0, 1.5, 0], "mass": 1000.0}]))
 
+# The 1:1000 pair with the "world" block of DESIGN.md section 6's example (substeps 4), as a reviewer copying that
+# example writes it.
+write_json("mass_pair_design_world.rlscene", dict(scene([floor,
+    {"name": "Light", "shape": {"box": [0.25, 0.25, 0.25]}, "position": [0, 0.25, 0], "mass": 1.0},
+    {"name": "Heavy", "shape": {"box": [0.25, 0.25, 0.25]}, "position": [0, 0.75, 0], "mass": 1000.0}],
+    gravity=[0, -9.81, 0], fps=60, substeps=4, integrator="symplectic-euler", effects="auto")))
+
 # Projectiles: a lob in free flight (exact parabola until it lands at about t = 1.7 s), a 0.1 m steel cube at
 # 300 m/s into a 5 cm anchor wall, and a 1,000 kg ball at 10 m/s into a 1 kg box resting on the floor.
 write_json("projectile_lob.rlscene", scene([floor,

@@ -175,10 +175,11 @@ struct Bake {
 };
 
 // `rigidlab-cli bake SCENE --seconds 10 --csv OUT.csv -o OUT.bake [extra]` in a temporary folder.
-inline Bake bake(const QString& scene, const QStringList& extra = {}, bool keepCsv = true) {
+inline Bake bake(const QString& scene, const QStringList& extra = {}, bool keepCsv = true,
+                 const QString& seconds = QStringLiteral("10")) {
     QTemporaryDir dir;
     const QString csvPath = dir.filePath("out.csv"), bakePath = dir.filePath("out.bake");
-    QStringList args{"bake", scene, "--seconds", "10", "--csv", csvPath, "-o", bakePath, "--quiet"};
+    QStringList args{"bake", scene, "--seconds", seconds, "--csv", csvPath, "-o", bakePath, "--quiet"};
     args << extra;
     Bake b;
     b.command = QStringLiteral("rigidlab-cli ") + args.join(' ');

@@ -265,6 +265,16 @@ write_json("mass_pair_design_world.rlscene", dict(scene([floor,
     {"name": "Heavy", "shape": {"box": [0.25, 0.25, 0.25]}, "position": [0, 0.75, 0], "mass": 1000.0}],
     gravity=[0, -9.81, 0], fps=60, substeps=4, integrator="symplectic-euler", effects="auto")))
 
+# Torque-free T-handle (no gravity, no anchor): a 0.8 m bar on a 0.6 m stem as one hull. Principal moments about
+# its centre of mass (rigidlab-cli info --json): x 1.140, y 1.187, z 2.269 kg m^2, so y is the intermediate axis.
+# Spun at 10 rad/s about y (flips), about z and about x (stable), each with a 0.01 rad/s nudge on the other axes.
+t_handle = [[x, y, z] for x in (-0.4, 0.4) for y in (0.3, 0.4) for z in (-0.05, 0.05)] + \
+    [[x, y, z] for x in (-0.05, 0.05) for y in (-0.3, 0.3) for z in (-0.05, 0.05)]
+for tag, w in (("intermediate", [0.01, 10.0, 0.01]), ("max", [0.01, 0.01, 10.0]), ("min", [10.0, 0.01, 0.01])):
+    write_json("t_handle_%s.rlscene" % tag, scene([
+        {"name": "THandle", "shape": {"hull": t_handle}, "position": [0, 2, 0], "angular_velocity": w}],
+        gravity=[0, 0, 0]))
+
 # Projectiles: a lob in free flight (exact parabola until it lands at about t = 1.7 s), a 0.1 m steel cube at
 # 300 m/s into a 5 cm anchor wall, and a 1,000 kg ball at 10 m/s into a 1 kg box resting on the floor.
 write_json("projectile_lob.rlscene", scene([floor,

@@ -73,6 +73,9 @@ MainWindow::MainWindow(QWidget* parent)
     m_selectionLabel = new QLabel(this);
     m_bodyCountLabel = new QLabel(this);
     m_frameTimeLabel = new QLabel(this);
+    m_selectionLabel->setObjectName("SelectionLabel");
+    m_bodyCountLabel->setObjectName("BodyCountLabel");
+    m_frameTimeLabel->setObjectName("FrameTimeLabel");
     statusBar()->addPermanentWidget(m_selectionLabel);
     statusBar()->addPermanentWidget(m_bodyCountLabel);
     statusBar()->addPermanentWidget(m_frameTimeLabel);
@@ -107,6 +110,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_document, &SceneDocument::sceneReset, this, &MainWindow::updateStatus);
     connect(m_document, &SceneDocument::bodyInserted, this, &MainWindow::updateStatus);
     connect(m_document, &SceneDocument::bodyRemoved, this, &MainWindow::updateStatus);
+    connect(m_document, &SceneDocument::bodyChanged, this, &MainWindow::updateStatus); // an anchor toggled
     connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
 

@@ -23,6 +23,7 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QStatusBar>
+#include <QStyle>
 #include <QToolBar>
 #include <QTreeView>
 #include <QUndoStack>
@@ -34,6 +35,21 @@
 namespace rl {
 
 namespace {
+
+// The anchor toggle's toolbar icon: a pin, as in the outliner's anchor column.
+QIcon makeAnchorIcon() {
+    QPixmap pixmap(24, 24);
+    pixmap.fill(Qt::transparent);
+    QPainter p(&pixmap);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QColor colour(52, 120, 200);
+    p.setPen(QPen(colour, 2.0, Qt::SolidLine, Qt::RoundCap));
+    p.setBrush(colour);
+    p.drawEllipse(QPointF(12, 7), 4.5, 4.5);
+    p.drawLine(QPointF(12, 12), QPointF(12, 21));
+    p.drawLine(QPointF(6.5, 14.5), QPointF(17.5, 14.5));
+    return QIcon(pixmap);
+}
 
 // Tool icons drawn in code, in the gizmo's colours, so the editor needs no image files.
 QIcon makeToolIcon(GizmoTool tool) {
@@ -99,21 +115,25 @@ EditController::EditController(MainWindow* window) : QObject(window), m_window(w
     QAction* undoAction = stack->createUndoAction(this, tr("&Undo"));
     undoAction->setObjectName("UndoAction");
     undoAction->setShortcut(QKeySequence::Undo);
-    undoAction->setIcon(QIcon::fromTheme("edit-undo"));
+    // Themed icons where a theme is installed, else the style's: a toolbar button without an icon shows its text,
+    // and the undo text changes with every edit, which made the toolbar jump.
+    QStyle* style = window->style();
+    undoAction->setIcon(QIcon::fromTheme("edit-undo", style->standardIcon(QStyle::SP_ArrowBack)));
     QAction* redoAction = stack->createRedoAction(this, tr("&Redo"));
     redoAction->setObjectName("RedoAction");
     // Ctrl+Shift+Z as in Blender, Ctrl+Y as on Windows.
     redoAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
-    redoAction->setIcon(QIcon::fromTheme("edit-redo"));
+    redoAction->setIcon(QIcon::fromTheme("edit-redo", style->standardIcon(QStyle::SP_ArrowForward)));
 
-    m_deleteAction = new QAction(QIcon::fromTheme("edit-delete"), tr("&Delete"), this);
+    m_deleteAction =
+        new QAction(QIcon::fromTheme("edit-delete", style->standardIcon(QStyle::SP_TrashIcon)), tr("&Delete"), this);
     m_deleteAction->setObjectName("DeleteAction");
     m_deleteAction->setShortcut(QKeySequence::Delete);
     m_deleteAction->setStatusTip(tr("Delete the selected bodies"));
     connect(m_deleteAction, &QAction::triggered, this, &EditController::deleteSelection);
 
     // Alt+A: Shift+A is Blender's "Add" and A "Select all".
-    m_anchorAction = new QAction(tr("Toggle &Anchor"), this);
+    m_anchorAction = new QAction(makeAnchorIcon(), tr("Toggle &Anchor"), this);
     m_anchorAction->setObjectName("ToggleAnchorAction");
     m_anchorAction->setShortcut(QKeySequence(Qt::ALT | Qt::Key_A));
     m_anchorAction->setStatusTip(tr("Make the selected bodies static, or dynamic again when all are static"));

@@ -1,0 +1,69 @@
+// The toolbars and the status bar as a user sees them: every toolbar button has an icon (no theme is installed on a
+// plain Debian desktop, so a themed icon alone left bare text buttons), the toolbar does not change width when the
+// undo text does, and the status bar's anchor count follows an anchor toggle.
+#include "MainWindow.h"
+#include "document/SceneDocument.h"
+#include "ui/GuiTestSetup.h"
+
+#include <QAction>
+#include <QLabel>
+#include <QTest>
+#include <QToolBar>
+
+class TestToolbars : public QObject {
+    Q_OBJECT
+public:
+    static void initMain() { rl::test::prepareGuiTest(); }
+
+private slots:
+    void everyButtonHasAnIcon_data() {
+        QTest::addColumn<QString>("toolbar");
+        QTest::newRow("file") << "FileToolBar";
+        QTest::newRow("edit") << "EditToolBar";
+        QTest::newRow("simulation") << "SimulationToolBar";
+        QTest::newRow("tools") << "ToolsToolBar";
+    }
+    void everyButtonHasAnIcon() {
+        QFETCH(QString, toolbar);
+        rl::MainWindow window;
+        auto* bar = window.findChild<QToolBar*>(toolbar);
+        QVERIFY(bar);
+        for (QAction* action : bar->actions()) {
+            if (action->isSeparator() || !action->isVisible())
+                continue;
+            QVERIFY2(!action->icon().isNull(), qPrintable(action->text()));
+        }
+    }
+
+    void editToolbarKeepsItsWidth() {
+        rl::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/stack.obj")));
+        auto* bar = window.findChild<QToolBar*>("EditToolBar");
+        QVERIFY(bar);
+        const int before = bar->sizeHint().width();
+        window.setSelectedBodies({3});
+        window.findChild<QAction*>("ToggleAnchorAction")->trigger();
+        QVERIFY(window.document()->undoStack()->canUndo());
+        QCOMPARE(bar->sizeHint().width(), before);
+    }
+
+    void statusCountsAnchorsAfterAToggle() {
+        rl::MainWindow window;
+        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/stack.obj")));
+        auto* label = window.findChild<QLabel*>("BodyCountLabel");
+        QVERIFY(label);
+        const QString before = label->text();
+        window.setSelectedBodies({3});
+        window.findChild<QAction*>("ToggleAnchorAction")->trigger();
+        QVERIFY(window.document()->body(3).anchor);
+        QVERIFY2(label->text() != before, qPrintable(label->text()));
+        QVERIFY2(label->text().contains(QLatin1String("2")), qPrintable(label->text()));
+        window.document()->undoStack()->undo();
+        QCOMPARE(label->text(), before);
+    }
+};
+
+QTEST_MAIN(TestToolbars)
+#include "tst_toolbars.moc"

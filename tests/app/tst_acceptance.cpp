@@ -60,6 +60,8 @@ private slots:
         QTest::addColumn<double>("maxSpeed");
         QTest::addColumn<double>("stand");
         QTest::newRow("tower20.obj") << "tower20.obj" << 0.01 << 0.01 << 0.05;
+        QTest::newRow("tower20_new_exporter.obj") << "tower20_new_exporter.obj" << 0.01 << 0.01 << 0.05;
+        QTest::newRow("tower20_rot45.obj") << "tower20_rot45.obj" << 0.01 << 0.01 << 0.05;
         QTest::newRow("tower20.fbx") << "tower20.fbx" << 0.01 << 0.01 << 0.05;
         QTest::newRow("tower20_zup.fbx") << "tower20_zup.fbx" << 0.01 << 0.01 << 0.05;
         QTest::newRow("tower20.glb") << "tower20.glb" << 0.01 << 0.01 << 0.05;

@@ -118,6 +118,18 @@ bpy.ops.export_scene.gltf(filepath=os.path.join(OUT, "tower20.glb"))
 tower(40, box_floor=True)
 export_obj("tower40.obj")
 
+# The same tower through Blender 3.4's new exporter (File > Export > Wavefront (.obj) in the menu), at its defaults;
+# it names objects without the mesh name, so the floor keeps the name a user gave it.
+tower(20, box_floor=False)
+bpy.ops.wm.obj_export(filepath=os.path.join(OUT, "tower20_new_exporter.obj"))
+
+# Every other cube turned 45 degrees about the vertical, on a floor plane.
+reset()
+floor_plane()
+for i in range(20):
+    cube("Cube", location=(0, 0, 0.5 + i), rotation=(0, 0, math.radians(45.0 * (i % 2))))
+export_obj("tower20_rot45.obj")
+
 # 20 of Blender's default cubes (2 m, primitive_cube_add() with no size) on a 60 m floor plane.
 reset()
 floor_plane(size=60)

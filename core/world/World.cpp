@@ -277,7 +277,7 @@ void World::findPairs() {
     m_profile.count(Counter::Pairs, m_contacts.size());
 }
 
-void World::collidePair(Contact& c) const {
+void World::collidePair(Contact& c) {
     const uint32_t a = c.bodyA, b = c.bodyB;
     const Real dt = 1.0 / m_fps;
     // Speculative margin: the base distance plus how far the two surfaces can approach within this step, so a
@@ -289,13 +289,49 @@ void World::collidePair(Contact& c) const {
     // Beyond the bodies' own size a speculative contact is meaningless; CCD takes over there.
     margin = std::min(margin, m_tuning.speculativeDistance + std::max(m_minExtent[a], m_minExtent[b]));
 
+    const Transform& xfA = m_transforms[a];
+    const Transform& xfB = m_transforms[b];
+    const Mat3 rAT = glm::transpose(xfA.rotation);
+    const Vec3 offset = rAT * (m_state.position[b] - m_state.position[a]);
+    const Mat3 rotation = rAT * xfB.rotation;
+    // Reuse: B has moved less than manifoldReuseDistance relative to A (translation of its centre plus rotation
+    // times its radius), and the margin has not grown. The points keep their features and impulses; their world
+    // positions and separations follow the bodies. The test is against the pose of the last real computation, so
+    // slow creep cannot accumulate past the tolerance.
+    if (c.cachedMargin >= 0.0 && margin <= c.cachedMargin + 1e-3) {
+        const Real tolerance = std::min(m_tuning.manifoldReuseDistance, 0.1 * std::min(m_minExtent[a], m_minExtent[b]));
+        const Vec3 dp = offset - c.cachedOffset;
+        Real rotationChange2 = 0.0; // |R - R0|_F^2 = 4 (1 - cos angle), about angle^2 * 2
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 d = rotation[k] - c.cachedRotation[k];
+            rotationChange2 += glm::dot(d, d);
+        }
+        const Real angle = std::sqrt(0.5 * rotationChange2);
+        if (glm::length(dp) + angle * m_radius[b] <= tolerance) {
+            Manifold& m = c.manifold;
+            m.normal = xfA.rotate(c.cachedNormal);
+            for (int k = 0; k < m.pointCount; ++k) {
+                ContactPoint& p = m.points[k];
+                const Vec3 pa = xfA.apply(p.localA);
+                const Vec3 pb = xfB.apply(p.localB);
+                p.position = 0.5 * (pa + pb);
+                p.separation = glm::dot(m.normal, pb - pa);
+            }
+            return;
+        }
+    }
+
     Manifold fresh;
     fresh.bodyA = a;
     fresh.bodyB = b;
-    collide(m_shapes[a], m_transforms[a], m_shapes[b], m_transforms[b], margin, fresh);
+    collide(m_shapes[a], xfA, m_shapes[b], xfB, margin, fresh);
     // Points that persist (same features, or nearly the same place) keep their impulses for warm starting.
     warmStart(c.manifold, fresh);
     c.manifold = fresh;
+    c.cachedOffset = offset;
+    c.cachedRotation = rotation;
+    c.cachedNormal = xfA.rotateInverse(fresh.normal);
+    c.cachedMargin = margin;
 }
 
 void World::narrowphase() {

@@ -53,6 +53,10 @@ struct WorldTuning {
     int relaxIterations = 1;
     // CCD sweeps a body that moves more than this fraction of its smallest size in one step.
     Real ccdFraction = 0.5;
+    // A pair's manifold is reused (its points refreshed from their local witnesses, as Bullet's persistent
+    // manifolds and Jolt's body-pair cache do) while no point of B has moved more than this relative to A since it
+    // was computed (m; at most a tenth of the smaller body's thinnest size).
+    Real manifoldReuseDistance = 1e-4;
 };
 
 // Figures of one frame for the timeline's tracks and the stability tests.
@@ -127,6 +131,13 @@ private:
         Manifold manifold;
         Real friction = 0.0;
         Real restitution = 0.0;
+        // The pose of B in A's frame (centres of mass) when the manifold was last computed, and the speculative
+        // margin it was computed with: while B has hardly moved relative to A the manifold is refreshed from its
+        // local witness points instead of recomputed (see collidePair()).
+        Vec3 cachedOffset{0.0};
+        Mat3 cachedRotation{1.0};
+        Vec3 cachedNormal{0.0};   // the manifold's normal in A's shape coordinates
+        Real cachedMargin = -1.0; // < 0: nothing cached
     };
 
     void updateBroadphase();
@@ -153,7 +164,7 @@ private:
     int substepRefinement(Real massRatio) const;
     void continuousCollision();
     void updateSleep();
-    void collidePair(Contact& contact) const;
+    void collidePair(Contact& contact);
     void refreshTransforms();
     void wakeIsland(uint32_t body);
 

@@ -105,6 +105,8 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies) {
         SolverBody& b = bodies[c.bodyB];
         for (int k = 0; k < c.pointCount; ++k) {
             const ContactConstraint::Point& p = c.points[k];
+            if (p.normalImpulse == 0.0 && p.tangentImpulse[0] == 0.0 && p.tangentImpulse[1] == 0.0)
+                continue; // a speculative point that never pushed: nothing to apply
             applyRow(a, b, p, 0, c.normal, p.normalImpulse);
             applyRow(a, b, p, 1, c.tangent[0], p.tangentImpulse[0]);
             applyRow(a, b, p, 2, c.tangent[1], p.tangentImpulse[1]);
@@ -119,8 +121,8 @@ void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
         for (int k = 0; k < c.pointCount; ++k) {
             ContactConstraint::Point& p = c.points[k];
             // Current separation from the motion since the step began; anchors follow each body's rotation.
-            const Vec3 prA = a.dq * p.rA;
-            const Vec3 prB = b.dq * p.rB;
+            const Vec3 prA = a.dR * p.rA;
+            const Vec3 prB = b.dR * p.rB;
             const Vec3 d = (b.dp - a.dp) + (prB - prA);
             const Real s = glm::dot(c.normal, d) + p.baseSeparation;
 
@@ -151,6 +153,9 @@ void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
             continue;
         for (int k = 0; k < c.pointCount; ++k) {
             ContactConstraint::Point& p = c.points[k];
+            // No normal impulse and no friction impulse (a speculative point): the clamp would give zero.
+            if (p.normalImpulse == 0.0 && p.tangentImpulse[0] == 0.0 && p.tangentImpulse[1] == 0.0)
+                continue;
             const Real maxFriction = c.friction * p.normalImpulse;
             for (int t = 0; t < 2; ++t) {
                 const Real vt = rowVelocity(a, b, p, 1 + t, c.tangent[t]);

@@ -12,15 +12,15 @@
 namespace rl {
 
 // Hot per-body state the solver reads and writes during a step. Positions are not needed: the solver measures the
-// current separation from the position change since the step began (dp, dq), as Box2D v3's soft step does, so the
+// current separation from the position change since the step began (dp, dR), as Box2D v3's soft step does, so the
 // collision manifolds are computed once per step and stay usable across substeps.
 struct SolverBody {
-    Vec3 v{0.0};                 // linear velocity of the centre of mass
-    Vec3 w{0.0};                 // angular velocity, world axes
-    Vec3 dp{0.0};                // position change since the step began
-    Quat dq{1.0, 0.0, 0.0, 0.0}; // rotation change since the step began
-    Real invMass = 0.0;          // 0 for anchors and kinematic proxies
-    Mat3 invInertia{0.0};        // world axes, taken at the start of the step
+    Vec3 v{0.0};          // linear velocity of the centre of mass
+    Vec3 w{0.0};          // angular velocity, world axes
+    Vec3 dp{0.0};         // position change since the step began
+    Mat3 dR{1.0};         // rotation change since the step began (a matrix: 9 multiplies per anchor)
+    Real invMass = 0.0;   // 0 for anchors and kinematic proxies
+    Mat3 invInertia{0.0}; // world axes, taken at the start of the step
 };
 
 // Coefficients of a soft constraint for one substep length (see softness()).

@@ -638,7 +638,8 @@ void World::solveChunk(SolveChunk& chunk, int substeps, bool timed) {
             for (size_t k = 0; k < group.size(); ++k) {
                 const uint32_t i = group[k];
                 bodies[k + 1].dp = m_state.position[i] - m_stepStartPosition[i];
-                bodies[k + 1].dq = glm::normalize(m_state.orientation[i] * glm::conjugate(m_stepStartOrientation[i]));
+                bodies[k + 1].dR =
+                    glm::mat3_cast(glm::normalize(m_state.orientation[i] * glm::conjugate(m_stepStartOrientation[i])));
             }
         }
         toSolver();

@@ -6,7 +6,6 @@
 
 #include <QCryptographicHash>
 #include <QFile>
-#include <QHash>
 #include <QString>
 #include <QStringList>
 #include <QTemporaryDir>
@@ -199,39 +198,50 @@ inline Bake bake(const QString& scene, const QStringList& extra = {}, bool keepC
     return b;
 }
 
-// Distinct vertices of every `o` object of an OBJ file, in file coordinates.
-inline QHash<QString, std::vector<std::array<double, 3>>> objVertices(const QString& path) {
-    QHash<QString, std::vector<std::array<double, 3>>> out;
+// Vertices of every `o` object of an OBJ file, in file order and file coordinates. Blender 3.4's new exporter
+// (wm.obj_export) can write the same name for several objects ("o Cube" for Cube, Cube.001, ...), so objects are
+// matched to bodies by their place in the file (bodies are in file order, anchors included).
+struct ObjObject {
+    QString name;
+    std::vector<std::array<double, 3>> vertices;
+};
+
+inline std::vector<ObjObject> objObjects(const QString& path) {
+    std::vector<ObjObject> out;
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly))
         return out;
-    QString current;
     while (!f.atEnd()) {
         const QByteArray line = f.readLine().trimmed();
         if (line.startsWith("o "))
-            current = QString::fromUtf8(line.mid(2).trimmed());
-        else if (line.startsWith("v ")) {
-            const QList<QByteArray> p = line.split(' ');
+            out.push_back({QString::fromUtf8(line.mid(2).trimmed()), {}});
+        else if (line.startsWith("v ") && !out.empty()) {
+            const QList<QByteArray> p = line.simplified().split(' ');
             if (p.size() >= 4)
-                out[current].push_back({p[1].toDouble(), p[2].toDouble(), p[3].toDouble()});
+                out.back().vertices.push_back({p[1].toDouble(), p[2].toDouble(), p[3].toDouble()});
         }
     }
     return out;
 }
 
 // Lowest world y any vertex of any dynamic body reaches in the run: each vertex is carried from frame 0 by the
-// body's rotation since frame 0 about its centre of mass (DESIGN.md §5). Bodies missing from the OBJ are skipped.
+// body's rotation since frame 0 about its centre of mass (DESIGN.md §5). Returns NaN when the OBJ's objects do not
+// match the CSV's bodies one to one.
 inline double lowestVertexY(const Csv& csv, const QString& objPath, int* atFrame = nullptr, QString* body = nullptr) {
-    const auto verts = objVertices(objPath);
+    const std::vector<ObjObject> objects = objObjects(objPath);
+    if (static_cast<int>(objects.size()) != csv.bodies)
+        return std::nan("");
     double lowest = 1e300;
     for (int b = 0; b < csv.bodies; ++b) {
-        if (csv.anchor[b] || !verts.contains(csv.names[b]))
+        if (objects[b].name != csv.names[b])
+            return std::nan("");
+        if (csv.anchor[b])
             continue;
         const Row& r0 = csv.at(0, b);
         for (int f = 0; f < csv.frames; ++f) {
             const Row& r = csv.at(f, b);
             const double w = r[QW], x = r[QX], y = r[QY], z = r[QZ];
-            for (const auto& v : verts[csv.names[b]]) {
+            for (const auto& v : objects[b].vertices) {
                 const double px = v[0] - r0[X], py = v[1] - r0[Y], pz = v[2] - r0[Z];
                 // y component of q p q*
                 const double tx = 2 * (y * pz - z * py), tz = 2 * (x * py - y * px);
@@ -242,7 +252,7 @@ inline double lowestVertexY(const Csv& csv, const QString& objPath, int* atFrame
                     if (atFrame)
                         *atFrame = f;
                     if (body)
-                        *body = csv.names[b];
+                        *body = QString::number(b) + " " + csv.names[b];
                 }
             }
         }

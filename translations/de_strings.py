@@ -381,6 +381,9 @@ T["rl::InspectorWidget"] = {
     "%1 kg": "%1 kg",
     "%1 kg m²": "%1 kg m²",
     "none (sphere)": "keine (Kugel)",
+    # The warnings core/scene/BodyProperties.cpp gives, for when the widget passes them through tr().
+    "concave: simulated as its convex hull": "konkav: wird als seine konvexe Hülle simuliert",
+    "smaller than 2 cm: may need more substeps": "kleiner als 2 cm: braucht eventuell mehr Teilschritte",
 }
 
 T["rl::MainWindow"] = {
@@ -389,7 +392,7 @@ T["rl::MainWindow"] = {
     "<b>RigidLab</b> %1<br>An editor and simulator for 3D rigid-body scenes.":
         "<b>RigidLab</b> %1<br>Ein Editor und Simulator für 3D-Starrkörperszenen.",
     "nothing selected": "nichts ausgewählt",
-    "frame %1 ms": "Frame %1 ms",
+    "frame %1 ms": "Framezeit %1 ms",
     "Outliner": "Gliederung",
     "Filter by name": "Nach Namen filtern",
     "Inspector": "Eigenschaften",
@@ -857,7 +860,7 @@ T["rl::WorldSettingsWidget"] = {
     "Off": "Aus",
     "Set Effect %1": "Effekt %1 festlegen",
     "Linear only: no rotation (the original project's mode)":
-        "Nur linear: keine Drehung (der Modus des ursprünglichen Projekts)",
+        "Nur linear, ohne Drehung (wie im Original)",
     "The same as Rotation: Off": "Dasselbe wie Drehung: Aus",
     "Linear Only": "Nur linear",
     "Allow Rotation": "Drehung erlauben",
@@ -890,4 +893,24 @@ T["rl::WorldSettingsWidget"] = {
     "forced": "erzwungen",
     "Auto: %1": "Auto: %1",
     "Auto would turn it %1: %2": "Auto würde es auf „%1“ stellen: %2",
+    # The reasons core/world/Effects.cpp gives, for when the widget passes them through tr().
+    "forced on": "erzwungen ein",
+    "forced off": "erzwungen aus",
+    "dynamic bodies and non-zero gravity": "dynamische Körper und Schwerkraft ungleich null",
+    "no dynamic body or zero gravity": "kein dynamischer Körper oder keine Schwerkraft",
+    "some pair has friction above zero": "ein Paar hat Reibung über null",
+    "every pair's combined friction is zero": "die kombinierte Reibung jedes Paars ist null",
+    "bodies can rotate": "Körper können sich drehen",
+    "only frictionless, non-spinning spheres (rotation cannot change)":
+        "nur reibungsfreie, nicht rotierende Kugeln (die Drehung kann sich nicht ändern)",
+    "some pair has restitution above zero": "ein Paar hat Restitution über null",
+    "every pair's combined restitution is zero": "die kombinierte Restitution jedes Paars ist null",
+    "damping is set": "Dämpfung ist gesetzt",
+    "no damping is set": "keine Dämpfung gesetzt",
+    "bodies can come to rest on anchors": "Körper können auf Ankern zur Ruhe kommen",
+    "nothing to come to rest on (no gravity or no anchor)":
+        "nichts, worauf Körper zur Ruhe kommen (keine Schwerkraft oder kein Anker)",
+    "some body may move more than half its size in one frame":
+        "ein Körper kann sich in einem Frame um mehr als seine halbe Größe bewegen",
+    "no body moves fast relative to its size": "kein Körper ist schnell im Verhältnis zu seiner Größe",
 }

@@ -1216,7 +1216,7 @@ Die Kopie wurde unter %2 behalten.</translation>
     </message>
     <message>
         <source>frame %1 ms</source>
-        <translation>Frame %1 ms</translation>
+        <translation>Framezeit %1 ms</translation>
     </message>
     <message>
         <source>Outliner</source>
@@ -2657,7 +2657,7 @@ Restitution %5 = %6</translation>
     </message>
     <message>
         <source>Linear only: no rotation (the original project&apos;s mode)</source>
-        <translation>Nur linear: keine Drehung (der Modus des ursprünglichen Projekts)</translation>
+        <translation>Nur linear, ohne Drehung (wie im Original)</translation>
     </message>
     <message>
         <source>The same as Rotation: Off</source>

@@ -40,8 +40,8 @@ T["rl::AccuracyPanel"] = {
         "Backt die Szene mit jeder Einstellung und vergleicht sie mit einem Referenz-Bake (RK4, 64 Teilschritte): "
         "Positionsfehler (RMS über Körper und Frames) über CPU-Zeit.",
     "Position error against CPU time": "Positionsfehler über CPU-Zeit",
-    "RMS error (m)": "RMS-Fehler (m)",
-    "Max error (m)": "Max. Fehler (m)",
+    "RMS error (m)": "RMS (m)",
+    "Max error (m)": "Max. (m)",
     "CPU (ms)": "CPU (ms)",
     "Running the study (each row is timed several times)…":
         "Studie läuft (jede Zeile wird mehrmals gemessen) …",

@@ -111,11 +111,11 @@
     </message>
     <message>
         <source>RMS error (m)</source>
-        <translation>RMS-Fehler (m)</translation>
+        <translation>RMS (m)</translation>
     </message>
     <message>
         <source>Max error (m)</source>
-        <translation>Max. Fehler (m)</translation>
+        <translation>Max. (m)</translation>
     </message>
     <message>
         <source>CPU (ms)</source>

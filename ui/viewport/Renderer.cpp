@@ -1,6 +1,8 @@
 #include "viewport/Renderer.h"
 
 #include <QDebug>
+#include <QElapsedTimer>
+#include <QFile>
 #include <QImage>
 #include <QOpenGLShaderProgram>
 
@@ -8,6 +10,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <ctime>
 #include <limits>
 #include <unordered_set>
 
@@ -24,6 +27,20 @@ namespace {
 constexpr GLuint kPositionLocation = 0;
 constexpr GLuint kModelLocation = 2; // four vec4 columns: 2, 3, 4, 5
 constexpr GLuint kColourFlagsLocation = 6;
+constexpr GLuint kSlotLocation = 1; // the batch: the vertex's instance slot, as a float (exact below 2^24)
+
+#ifndef GL_TEXTURE_BUFFER
+#define GL_TEXTURE_BUFFER 0x8C2A
+#endif
+#ifndef GL_RGBA32F
+#define GL_RGBA32F 0x8814
+#endif
+
+// A mesh with fewer instances than this goes into the batch; one with more is drawn instanced, which stores its
+// vertices once instead of once per instance.
+constexpr int kBatchBelowInstances = 16;
+// The batch holds at most this many vertices (16 bytes each); further meshes are drawn instanced.
+constexpr size_t kBatchMaxVertices = size_t(4) << 20;
 
 // A mesh is closed when every directed edge (a, b) appears once and its twin (b, a) appears too: then each back
 // face is hidden behind a front face and culling them halves the triangles llvmpipe has to set up and bin.
@@ -54,6 +71,32 @@ std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* vertexPath, const
     return program;
 }
 
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+
+// The batch's program: mesh.vert compiled with RL_BATCHED defined, so both paths share the shading code.
+std::unique_ptr<QOpenGLShaderProgram> buildBatchProgram() {
+    QFile vertexFile(QStringLiteral(":/shaders/mesh.vert"));
+    if (!vertexFile.open(QIODevice::ReadOnly)) {
+        qWarning() << "rl::Renderer: cannot read mesh.vert";
+        return nullptr;
+    }
+    QByteArray source = vertexFile.readAll();
+    const qsizetype versionEnd = source.indexOf('\n') + 1; // the #version line must stay first
+    source.insert(versionEnd, "#define RL_BATCHED 1\n");
+    auto program = std::make_unique<QOpenGLShaderProgram>();
+    if (!program->addShaderFromSourceCode(QOpenGLShader::Vertex, source) ||
+        !program->addShaderFromSourceFile(QOpenGLShader::Fragment, QStringLiteral(":/shaders/mesh.frag")) ||
+        !program->link()) {
+        qWarning() << "rl::Renderer: batched mesh shader failed:" << program->log();
+        return nullptr;
+    }
+    return program;
+}
+
 void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::mat4& m) {
     program.setUniformValue(name, QMatrix4x4(glm::value_ptr(m)).transposed()); // glm is column-major
 }
@@ -77,9 +120,12 @@ bool Renderer::initialize() {
     m_backgroundProgram = buildProgram(":/shaders/background.vert", ":/shaders/background.frag");
     m_gridProgram = buildProgram(":/shaders/grid.vert", ":/shaders/grid.frag");
     m_overlayProgram = buildProgram(":/shaders/overlay.vert", ":/shaders/overlay.frag");
-    if (!m_meshProgram || !m_outlineProgram || !m_backgroundProgram || !m_gridProgram || !m_overlayProgram) {
+    m_batchProgram = buildBatchProgram();
+    if (!m_meshProgram || !m_outlineProgram || !m_backgroundProgram || !m_gridProgram || !m_overlayProgram ||
+        !m_batchProgram) {
         // Leave nothing half-built: the widget then shows nothing rather than drawing with missing programs.
         m_meshProgram.reset();
+        m_batchProgram.reset();
         m_outlineProgram.reset();
         m_backgroundProgram.reset();
         m_gridProgram.reset();
@@ -88,6 +134,7 @@ bool Renderer::initialize() {
     }
     glGenVertexArrays(1, &m_emptyVao);
     glGenBuffers(1, &m_instanceBuffer);
+    glGenTextures(1, &m_instanceTexture);
     glGenBuffers(1, &m_selectionBuffer);
     m_instanceBufferCapacity = 0;
     m_selectionBufferCapacity = 0;
@@ -106,6 +153,8 @@ void Renderer::release() {
         return;
     releaseMeshes();
     glDeleteBuffers(1, &m_instanceBuffer);
+    glDeleteTextures(1, &m_instanceTexture);
+    m_instanceTexture = 0;
     glDeleteBuffers(1, &m_selectionBuffer);
     m_selectionBuffer = 0;
     m_selectionBufferCapacity = 0;
@@ -117,6 +166,7 @@ void Renderer::release() {
     m_emptyVao = 0;
     m_instanceBufferCapacity = 0;
     m_meshProgram.reset();
+    m_batchProgram.reset();
     m_outlineProgram.reset();
     m_backgroundProgram.reset();
     m_gridProgram.reset();
@@ -131,6 +181,14 @@ void Renderer::releaseMeshes() {
         glDeleteBuffers(1, &gl.indexBuffer);
     }
     m_meshGl.clear();
+    if (m_batchVao)
+        glDeleteVertexArrays(1, &m_batchVao);
+    if (m_batchVertexBuffer)
+        glDeleteBuffers(1, &m_batchVertexBuffer);
+    if (m_batchIndexBuffer)
+        glDeleteBuffers(1, &m_batchIndexBuffer);
+    m_batchVao = m_batchVertexBuffer = m_batchIndexBuffer = 0;
+    m_batchClosedIndices = m_batchOpenIndices = 0;
 }
 
 void Renderer::setScene(const ViewportScene& scene) {
@@ -148,9 +206,16 @@ void Renderer::setScene(const ViewportScene& scene) {
         if (inst.meshIndex >= 0 && inst.meshIndex < meshCount)
             ++m_ranges[inst.meshIndex].instanceCount;
     int first = 0;
-    for (MeshRange& range : m_ranges) {
+    size_t batchVertices = 0;
+    for (size_t m = 0; m < m_ranges.size(); ++m) {
+        MeshRange& range = m_ranges[m];
         range.firstInstance = first;
         first += range.instanceCount;
+        const size_t vertices = m_meshes[m].vertices.size() * static_cast<size_t>(range.instanceCount);
+        range.batched = range.instanceCount > 0 && range.instanceCount < kBatchBelowInstances &&
+                        !m_meshes[m].triangles.empty() && batchVertices + vertices <= kBatchMaxVertices;
+        if (range.batched)
+            batchVertices += vertices;
     }
     m_instances.assign(first, InstanceData{});
     m_slotOfInstance.assign(scene.instances.size(), -1);
@@ -258,7 +323,81 @@ void Renderer::uploadMeshes() {
         glVertexAttribDivisor(kColourFlagsLocation, 1);
     }
     glBindVertexArray(0);
+    buildBatch();
     m_meshesDirty = false;
+}
+
+void Renderer::buildBatch() {
+    // Vertices in shape coordinates with their instance's slot; the vertex shader takes the model matrix and the
+    // colour from the instance buffer (as a buffer texture), so playback still uploads only the instances.
+    struct BatchVertex {
+        glm::vec3 position;
+        float slot;
+    };
+    std::vector<BatchVertex> vertices;
+    std::vector<uint32_t> closedIndices, openIndices;
+    for (size_t m = 0; m < m_meshes.size() && m < m_ranges.size(); ++m) {
+        const MeshRange& range = m_ranges[m];
+        if (!range.batched)
+            continue;
+        const ViewportMesh& mesh = m_meshes[m];
+        std::vector<uint32_t>& indices = range.closed ? closedIndices : openIndices;
+        for (int slot = range.firstInstance; slot < range.firstInstance + range.instanceCount; ++slot) {
+            const auto base = static_cast<uint32_t>(vertices.size());
+            for (const glm::vec3& v : mesh.vertices)
+                vertices.push_back({v, static_cast<float>(slot)});
+            for (const auto& t : mesh.triangles)
+                for (uint32_t k : t)
+                    indices.push_back(base + k);
+        }
+    }
+    m_batchClosedIndices = static_cast<int>(closedIndices.size());
+    m_batchOpenIndices = static_cast<int>(openIndices.size());
+    if (vertices.empty())
+        return;
+    closedIndices.insert(closedIndices.end(), openIndices.begin(), openIndices.end());
+    glGenVertexArrays(1, &m_batchVao);
+    glGenBuffers(1, &m_batchVertexBuffer);
+    glGenBuffers(1, &m_batchIndexBuffer);
+    glBindVertexArray(m_batchVao);
+    glBindBuffer(GL_ARRAY_BUFFER, m_batchVertexBuffer);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(BatchVertex)), vertices.data(),
+                 GL_STATIC_DRAW);
+    glEnableVertexAttribArray(kPositionLocation);
+    glVertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, sizeof(BatchVertex), nullptr);
+    glEnableVertexAttribArray(kSlotLocation);
+    glVertexAttribPointer(kSlotLocation, 1, GL_FLOAT, GL_FALSE, sizeof(BatchVertex),
+                          reinterpret_cast<const void*>(offsetof(BatchVertex, slot)));
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_batchIndexBuffer);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(closedIndices.size() * sizeof(uint32_t)),
+                 closedIndices.data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void Renderer::drawBatch() {
+    if (!m_batchVao || m_batchClosedIndices + m_batchOpenIndices == 0)
+        return;
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_BUFFER, m_instanceTexture);
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, m_instanceBuffer);
+    m_batchProgram->setUniformValue("uInstances", 1);
+    glBindVertexArray(m_batchVao);
+    if (m_batchClosedIndices > 0) {
+        glEnable(GL_CULL_FACE);
+        glDrawElements(GL_TRIANGLES, m_batchClosedIndices, GL_UNSIGNED_INT, nullptr);
+        ++m_drawCalls;
+    }
+    if (m_batchOpenIndices > 0) {
+        glDisable(GL_CULL_FACE);
+        glDrawElements(GL_TRIANGLES, m_batchOpenIndices, GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(static_cast<size_t>(m_batchClosedIndices) * sizeof(uint32_t)));
+        ++m_drawCalls;
+    }
+    glDisable(GL_CULL_FACE);
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+    glActiveTexture(GL_TEXTURE0);
 }
 
 void Renderer::uploadInstances(unsigned buffer, size_t& capacity, const std::vector<InstanceData>& data) {
@@ -281,7 +420,7 @@ void Renderer::drawMeshes(QOpenGLShaderProgram& program, bool outlinePass) {
         const MeshGl& gl = m_meshGl[m];
         const int first = outlinePass ? m_selectedRanges[m].first : range.firstInstance;
         const int instanceCount = outlinePass ? m_selectedRanges[m].count : range.instanceCount;
-        if (instanceCount == 0 || gl.indexCount == 0)
+        if (instanceCount == 0 || gl.indexCount == 0 || (range.batched && !outlinePass))
             continue;
         if (outlinePass) {
             setUniform(program, "uMeshCentre", range.centre);
@@ -314,6 +453,22 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     m_drawCalls = 0;
     if (!m_initialized)
         return;
+    QElapsedTimer phaseTimer;
+    phaseTimer.start();
+    double phaseCpuStart = processCpuMs();
+    // Profiling only: finish the GL work of the phase that just ended and book its wall and CPU time.
+    auto endPhase = [&](Phase phase) {
+        if (!m_profiling)
+            return;
+        glFinish();
+        m_phaseMs[phase] = static_cast<double>(phaseTimer.nsecsElapsed()) * 1e-6;
+        const double cpu = processCpuMs();
+        m_phaseCpuMs[phase] = cpu - phaseCpuStart;
+        phaseCpuStart = cpu;
+        phaseTimer.restart();
+    };
+    std::fill(std::begin(m_phaseMs), std::end(m_phaseMs), 0.0);
+    std::fill(std::begin(m_phaseCpuMs), std::end(m_phaseCpuMs), 0.0);
     if (m_meshesDirty)
         uploadMeshes();
     if (m_instancesDirty) {
@@ -336,6 +491,7 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
         uploadInstances(m_selectionBuffer, m_selectionBufferCapacity, m_selected);
         m_selectionDirty = false;
     }
+    endPhase(Upload);
 
     const glm::mat4 viewProjection = camera.viewProjection();
     const glm::vec3 eye = camera.eye();
@@ -356,6 +512,7 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     glDisable(GL_BLEND);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_POLYGON_OFFSET_FILL);
+    endPhase(Clear);
 
     // Background gradient, behind everything and without touching depth.
     glDisable(GL_DEPTH_TEST);
@@ -365,6 +522,7 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     glBindVertexArray(m_emptyVao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     ++m_drawCalls;
+    endPhase(Background);
 
     // Bodies.
     glEnable(GL_DEPTH_TEST);
@@ -377,6 +535,12 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     const glm::vec3 key = glm::normalize(-camera.forward() + 0.25f * camera.up() - 0.25f * camera.right());
     setUniform(*m_meshProgram, "uKeyDirection", key);
     drawMeshes(*m_meshProgram, false);
+    m_batchProgram->bind();
+    setUniform(*m_batchProgram, "uViewProjection", viewProjection);
+    setUniform(*m_batchProgram, "uEye", eye);
+    setUniform(*m_batchProgram, "uKeyDirection", key);
+    drawBatch();
+    endPhase(Bodies);
 
     // Ground grid: blended, depth-tested but not written, and pulled slightly forward so that it shows on a floor
     // whose top face lies in the plane y = 0.
@@ -403,6 +567,7 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
         glDisable(GL_BLEND);
         glDepthMask(GL_TRUE);
     }
+    endPhase(Grid);
 
     // Selection outline. Pass 1 marks the selected objects in the stencil; pass 2 draws them pushed outwards in
     // screen space where the stencil is clear, which leaves a ring of constant width around each silhouette.
@@ -437,6 +602,7 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
         glDisable(GL_STENCIL_TEST);
         glDepthMask(GL_TRUE);
     }
+    endPhase(Outline);
 
     glBindVertexArray(0);
     glUseProgram(0);

@@ -78,6 +78,7 @@ void Viewport::paintGL() {
     const qreal ratio = devicePixelRatioF();
     m_renderer.render(m_camera, static_cast<int>(std::lround(width() * ratio)),
                       static_cast<int>(std::lround(height() * ratio)), m_options);
+    const qint64 sceneDone = timer.nsecsElapsed();
 
     if (m_overlayPainter) {
         const QSize pixels(static_cast<int>(std::lround(width() * ratio)),
@@ -102,8 +103,9 @@ void Viewport::paintGL() {
             static_cast<int>(std::lround(width() * ratio)), static_cast<int>(std::lround(height() * ratio)), 1);
     }
     paintTransformGizmo();
-    if (m_measureFrameTime)
+    if (m_measureFrameTime || m_renderer.profiling())
         context()->functions()->glFinish();
+    m_overlaysMs = static_cast<double>(timer.nsecsElapsed() - sceneDone) * 1e-6;
 
     m_lastFrameMs = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
     m_averageFrameMs = m_averageFrameMs == 0.0 ? m_lastFrameMs : 0.95 * m_averageFrameMs + 0.05 * m_lastFrameMs;

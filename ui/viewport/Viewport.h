@@ -92,6 +92,12 @@ public:
     double lastFrameMs() const { return m_lastFrameMs; }
     double averageFrameMs() const { return m_averageFrameMs; } // exponential average over about 20 frames
     int drawCallsLastFrame() const { return m_renderer.drawCallsLastFrame(); }
+    // Where a frame's time goes: with profiling on, paintGL waits for the GL after each phase (see Renderer) and
+    // after the overlays (the simulation overlays, the axis indicator and the transform gizmo).
+    void setProfiling(bool on) { m_renderer.setProfiling(on); }
+    double phaseMs(Renderer::Phase phase) const { return m_renderer.phaseMs(phase); }
+    double phaseCpuMs(Renderer::Phase phase) const { return m_renderer.phaseCpuMs(phase); }
+    double overlaysMs() const { return m_overlaysMs; }
     bool isRendererReady() const { return m_renderer.isInitialized(); }
 
     QSize minimumSizeHint() const override { return {160, 120}; }
@@ -171,6 +177,7 @@ private:
     bool m_measureFrameTime = true;
     double m_lastFrameMs = 0.0;
     double m_averageFrameMs = 0.0;
+    double m_overlaysMs = 0.0;
 };
 
 } // namespace rl

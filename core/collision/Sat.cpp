@@ -6,6 +6,12 @@
 
 namespace rl {
 
+namespace {
+// Below this many vertices the face query scans B's vertices (already moved to A's frame) instead of calling the
+// support function: no frame change of the direction and no call, and the same minimum.
+constexpr size_t kSatScanVertices = 48;
+} // namespace
+
 void closestPointsSegments(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1, Vec3& onP, Vec3& onQ) {
     const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
     const Real a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
@@ -87,8 +93,17 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
             const PolyFace& f = A.faces[i];
             if (sideRule && !allowed(f.normal))
                 continue;
-            const Vec3 deepest = bv[B.supportIndex(RT * -f.normal)];
-            const Real sep = glm::dot(f.normal, deepest) - f.offset;
+            // B's deepest vertex below the face plane. Small hulls (boxes) scan their vertices, already in A's
+            // frame; large ones hill-climb in B's frame.
+            Real deepest;
+            if (bv.size() < kSatScanVertices) {
+                deepest = glm::dot(f.normal, bv[0]);
+                for (size_t k = 1; k < bv.size(); ++k)
+                    deepest = std::min(deepest, glm::dot(f.normal, bv[k]));
+            } else {
+                deepest = glm::dot(f.normal, bv[B.supportIndex(RT * -f.normal)]);
+            }
+            const Real sep = deepest - f.offset;
             if (sep > faceA.separation) {
                 faceA.separation = sep;
                 faceA.face = i;

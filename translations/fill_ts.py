@@ -1,13 +1,17 @@
 #!/usr/bin/env python3
-"""Fills translations/rigidlab_de.ts from de_strings.py and checks every translation.
+"""Fills translations/rigidlab_<lang>.ts from <lang>_strings.py and checks every translation.
 
 Usage (from the repository root):
   /usr/lib/qt6/bin/lupdate -silent -locations none ui app/rigidlab -ts translations/rigidlab_de.ts \
       -target-language de_DE
-  python3 translations/fill_ts.py
+  python3 translations/fill_ts.py            # German (de)
+  /usr/lib/qt6/bin/lupdate -silent -pluralonly -locations none ui app/rigidlab -ts translations/rigidlab_en.ts \
+      -target-language en
+  python3 translations/fill_ts.py en         # English plural forms only
 Messages without an entry in de_strings.py stay unfinished and are listed; the checks (placeholders, HTML tags,
 accelerator count, plural forms) fail loudly instead of writing a broken file.
 """
+import importlib
 import os
 import re
 import subprocess
@@ -15,9 +19,10 @@ import sys
 import xml.etree.ElementTree as ET
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-TS = os.path.join(HERE, "rigidlab_de.ts")
+LANG = sys.argv[1] if len(sys.argv) > 1 else "de"
+TS = os.path.join(HERE, f"rigidlab_{LANG}.ts")
 sys.path.insert(0, HERE)
-from de_strings import T  # noqa: E402
+T = importlib.import_module(f"{LANG}_strings").T
 
 PLACEHOLDER = re.compile(r"%L?\d+|%n")
 TAG = re.compile(r"</?(?:b|i|u|br|p|a|span|tt|code|small|big|font|ul|ol|li|table|tr|td|h[1-6])\b[^>]*>")

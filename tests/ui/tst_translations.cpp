@@ -74,6 +74,7 @@ QList<TsMessage> readTs(const QString& path, QString* error) {
 }
 
 const QString kGermanTs = QStringLiteral(RL_SOURCE_DIR "/translations/rigidlab_de.ts");
+const QString kEnglishTs = QStringLiteral(RL_SOURCE_DIR "/translations/rigidlab_en.ts");
 
 // %1..%99, %L1.., %n: the arguments a translation must keep.
 QStringList placeholders(const QString& text) {
@@ -151,7 +152,9 @@ private slots:
     }
 
 #ifdef RL_LUPDATE_PATH
-    void germanFileCoversTheSources() {
+    // lupdate over the current sources: German must translate every string, English (a plural-only file, so that
+    // "%n bodies" reads "1 body") every plural.
+    void translationFilesCoverTheSources() {
         QTemporaryDir scratch;
         QVERIFY(scratch.isValid());
         const QString fresh = scratch.filePath(QStringLiteral("fresh.ts"));
@@ -166,16 +169,25 @@ private slots:
         const QList<TsMessage> current = readTs(fresh, &error);
         QVERIFY2(error.isEmpty(), qPrintable(error));
         QVERIFY(current.size() > 100);
-        QSet<QString> translated;
-        for (const TsMessage& m : readTs(kGermanTs, &error))
-            if (m.finished)
-                translated.insert(m.context + QLatin1Char('\x1f') + m.source);
+        const auto finishedIn = [&error](const QString& path) {
+            QSet<QString> translated;
+            for (const TsMessage& m : readTs(path, &error))
+                if (m.finished)
+                    translated.insert(m.context + QLatin1Char('\x1f') + m.source);
+            return translated;
+        };
+        const QSet<QString> german = finishedIn(kGermanTs);
+        const QSet<QString> english = finishedIn(kEnglishTs);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
         QStringList missing;
-        for (const TsMessage& m : current)
-            if (!translated.contains(m.context + QLatin1Char('\x1f') + m.source))
-                missing.append(m.context + QStringLiteral(": ") + m.source);
-        QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("untranslated strings (run the update_translations "
-                                                              "target and translate them):\n") +
+        for (const TsMessage& m : current) {
+            const QString key = m.context + QLatin1Char('\x1f') + m.source;
+            if (!german.contains(key))
+                missing.append(QStringLiteral("de: ") + m.context + QStringLiteral(": ") + m.source);
+            if (m.numerus && !english.contains(key))
+                missing.append(QStringLiteral("en (plural): ") + m.context + QStringLiteral(": ") + m.source);
+        }
+        QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("untranslated strings (see translations/fill_ts.py):\n") +
                                                missing.join(QLatin1Char('\n'))));
     }
 #endif
@@ -217,21 +229,39 @@ private slots:
     // locale (any region) or the "de" setting must find the German file, English needs none.
     void languageSettingFindsTheTranslation_data() {
         QTest::addColumn<QString>("locale");
-        QTest::addColumn<bool>("found");
-        QTest::newRow("setting de") << QStringLiteral("de") << true;
-        QTest::newRow("system de_DE") << QStringLiteral("de_DE") << true;
-        QTest::newRow("system de_AT") << QStringLiteral("de_AT") << true;
-        QTest::newRow("setting en") << QStringLiteral("en") << false;
+        QTest::addColumn<QString>("language"); // of the file found; empty: none
+        QTest::newRow("setting de") << QStringLiteral("de") << QStringLiteral("de_DE");
+        QTest::newRow("system de_DE") << QStringLiteral("de_DE") << QStringLiteral("de_DE");
+        QTest::newRow("system de_AT") << QStringLiteral("de_AT") << QStringLiteral("de_DE");
+        QTest::newRow("setting en") << QStringLiteral("en") << QStringLiteral("en");
+        QTest::newRow("system en_GB") << QStringLiteral("en_GB") << QStringLiteral("en");
+        QTest::newRow("system fr_FR") << QStringLiteral("fr_FR") << QString();
     }
     void languageSettingFindsTheTranslation() {
         QFETCH(QString, locale);
-        QFETCH(bool, found);
+        QFETCH(QString, language);
         QTranslator translator;
         QCOMPARE(
             translator.load(QLocale(locale), QStringLiteral("rigidlab"), QStringLiteral("_"), QStringLiteral(":/i18n")),
-            found);
-        if (found)
-            QCOMPARE(translator.language(), QStringLiteral("de_DE"));
+            !language.isEmpty());
+        QCOMPARE(translator.language(), language);
+    }
+
+    void pluralsRenderInEnglish_data() {
+        QTest::addColumn<int>("n");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("1") << 1 << QStringLiteral("1 anchor");
+        QTest::newRow("5") << 5 << QStringLiteral("5 anchors");
+    }
+    void pluralsRenderInEnglish() {
+        QFETCH(int, n);
+        QFETCH(QString, expected);
+        QTranslator translator;
+        QVERIFY(translator.load(QStringLiteral(":/i18n/rigidlab_en.qm")));
+        QCoreApplication::installTranslator(&translator);
+        const QString text = QCoreApplication::translate("rl::MainWindow", "%n anchors", nullptr, n);
+        QCoreApplication::removeTranslator(&translator);
+        QCOMPARE(text, expected);
     }
 
     void pluralsRenderInGerman_data() {

@@ -121,6 +121,12 @@ MainWindow::MainWindow(QWidget* parent)
     restoreState(settings.value("mainwindow/state").toByteArray());
     // The viewport holds the keyboard from the start, so that Space, A, G or the arrows act before any click.
     m_viewport->setFocus(Qt::OtherFocusReason);
+    // Watches our dialogs closing (see eventFilter).
+    qApp->installEventFilter(this);
+    connect(qApp, &QGuiApplication::focusWindowChanged, this, [this](QWindow* window) {
+        if (window)
+            m_lastFocusWindow = window;
+    });
     updateTitle();
     updateStatus();
 }
@@ -301,6 +307,24 @@ void MainWindow::updateStatus() {
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::Hide && watched != this && watched->isWidgetType()) {
+        auto* hidden = static_cast<QWidget*>(watched);
+        // Qt deactivates a closing dialog before its Hide event: ask whether it was the last of our windows to have
+        // the keyboard instead.
+        if (hidden->isWindow() && m_lastFocusWindow && hidden->windowHandle() == m_lastFocusWindow) {
+            bool ours = false;
+            for (QWidget* w = hidden->parentWidget(); w && !ours; w = w->parentWidget())
+                ours = w == this;
+            // One of our dialogs had the keyboard and closes: take it back. A window manager would give it to us;
+            // without one (a scripted session under Xvfb) the keyboard went nowhere until the next click.
+            if (ours)
+                QTimer::singleShot(0, this, [this] {
+                    const QWidget* active = QApplication::activeWindow();
+                    if (isVisible() && !QApplication::activeModalWidget() && (!active || !active->isVisible()))
+                        activateWindow();
+                });
+        }
+    }
     if (watched == m_viewport && event->type() == QEvent::ShortcutOverride) {
         auto* key = static_cast<QKeyEvent*>(event);
         if (key->key() == Qt::Key_Delete && (key->modifiers() & Qt::KeypadModifier)) {

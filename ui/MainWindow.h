@@ -5,6 +5,8 @@
 #pragma once
 
 #include <QMainWindow>
+#include <QPointer>
+#include <QWindow>
 
 #include <memory>
 
@@ -104,6 +106,7 @@ private:
     bool m_syncingSelection = false;
     bool m_restoredGeometry = false;
     bool m_shownOnce = false;
+    QPointer<QWindow> m_lastFocusWindow; // the last of our windows that had the keyboard
 };
 
 } // namespace rl

@@ -6,10 +6,12 @@
 #include "viewport/Viewport.h"
 
 #include <QApplication>
+#include <QDialog>
 #include <QDockWidget>
 #include <QScreen>
 #include <QSettings>
 #include <QTest>
+#include <QTimer>
 
 class TestFirstLaunch : public QObject {
     Q_OBJECT
@@ -30,6 +32,39 @@ private slots:
         QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/stack.obj")));
         QTRY_VERIFY_WITH_TIMEOUT(window.isActiveWindow(), 10000);
         QTRY_COMPARE_WITH_TIMEOUT(QApplication::focusWidget(), static_cast<QWidget*>(window.viewport()), 10000);
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_A);
+        QCOMPARE(window.selectedBodies().size(), window.document()->bodyCount());
+    }
+
+    // After a modal dialog (a message box, the bake dialog, a file dialog) closes, the window has the keyboard
+    // again: with no window manager nobody else gives it back, and every key after Save As or an error box was lost.
+    void keysWorkAfterADialogCloses() {
+        rl::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/stack.obj")));
+        QTRY_VERIFY_WITH_TIMEOUT(window.isActiveWindow(), 10000);
+        for (int round = 0; round < 2; ++round) {
+            QDialog dialog(&window);
+            dialog.resize(300, 200);
+            bool wasActive = false;
+            QTimer::singleShot(0, &dialog, [&] {
+                // Close only once the dialog has the keyboard, as when a user answers it.
+                auto* poll = new QTimer(&dialog);
+                connect(poll, &QTimer::timeout, &dialog, [&] {
+                    if (!dialog.isActiveWindow())
+                        return;
+                    wasActive = true;
+                    dialog.accept();
+                });
+                poll->start(50);
+            });
+            QTimer::singleShot(10000, &dialog, &QDialog::reject); // never hang
+            dialog.exec();
+            QVERIFY(wasActive);
+            QTRY_VERIFY_WITH_TIMEOUT(window.isActiveWindow(), 10000);
+            QTRY_COMPARE_WITH_TIMEOUT(QApplication::focusWidget(), static_cast<QWidget*>(window.viewport()), 10000);
+        }
         QTest::keyClick(QApplication::focusWidget(), Qt::Key_A);
         QCOMPARE(window.selectedBodies().size(), window.document()->bodyCount());
     }

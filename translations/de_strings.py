@@ -227,7 +227,7 @@ T["rl::ExportDialog"] = {
         "Massenschwerpunkte und Drehungen; dieses Backergebnis stammt aus einer .bake-Datei, die keine "
         "Geschwindigkeiten enthält, daher bleiben diese Felder leer.",
     "Every body and frame (%1 × %2), with the scene as OBJ text, readable by the original project's reader.":
-        "Jeder Körper und Frame (%1 × %2), mit der Szene als OBJ-Text, lesbar für den Leser des ursprünglichen Projekts.",
+        "Jeder Körper und Frame (%1 × %2), mit der Szene als OBJ-Text; das ursprüngliche Projekt kann die Datei lesen.",
     "CSV files (*.csv)": "CSV-Dateien (*.csv)",
     "Bake files (*.bake)": "Bake-Dateien (*.bake)",
     "Choose a file to export to.": "Wählen Sie eine Datei für den Export.",
@@ -490,7 +490,7 @@ T["rl::MaterialsWidget"] = {
     "Presets keep their names; duplicate one to make your own":
         "Vorgaben behalten ihre Namen; duplizieren Sie eine für ein eigenes Material",
     "No body uses it.": "Kein Körper verwendet es.",
-    "Used by %1.": "Verwendet von %1.",
+    "Used by %1.": "Für %1 verwendet.",
     "Built-in preset, changed for this scene (built-in: %1 kg/m³, μ %2, e %3). %4":
         "Eingebaute Vorgabe, für diese Szene geändert (eingebaut: %1 kg/m³, μ %2, e %3). %4",
     "Built-in preset; changes apply to this scene only. %1":
@@ -504,7 +504,7 @@ T["rl::MaterialsWidget"] = {
     "No bodies in the scene.": "Keine Körper in der Szene.",
     "Not included: %1 with their own friction or restitution (set in the inspector).":
         "Nicht enthalten: %1 mit eigener Reibung oder Restitution (in den Eigenschaften festgelegt).",
-    "Renamed \"%1\" to \"%2\" on %3 too.": "„%1“ auch bei %3 in „%2“ umbenannt.",
+    "Renamed \"%1\" to \"%2\" on %3 too.": "„%1“ auch für %3 in „%2“ umbenannt.",
     "Material": "Material",
     "Add Material": "Material hinzufügen",
     "%1 copy": "%1 Kopie",
@@ -515,7 +515,7 @@ T["rl::MaterialsWidget"] = {
     "Delete Material %1": "Material %1 löschen",
     "Deleted \"%1\"; no body used it.": "„%1“ gelöscht; kein Körper hat es verwendet.",
     "Deleted \"%1\" and moved the %2 that used it to Default (Undo brings it back).":
-        "„%1“ gelöscht; %2, die es verwendeten, haben jetzt „Default“ („Rückgängig“ stellt es wieder her).",
+        "„%1“ gelöscht und durch „Default“ ersetzt für %2 („Rückgängig“ stellt es wieder her).",
     "Reset Preset %1": "Vorgabe %1 zurücksetzen",
 }
 
@@ -831,8 +831,8 @@ T["rl::WorldSettingsWidget"] = {
         "Erster Ordnung bei gleichem Aufwand; die Energie bleibt beschränkt (Standard)",
     "Second order; exact for free fall": "Zweiter Ordnung; exakt für den freien Fall",
     "Fourth order in free flight; costs more per step": "Vierter Ordnung im freien Flug; teurer pro Schritt",
-    "Explicit Euler": "Explizites Euler",
-    "Symplectic Euler": "Symplektisches Euler",
+    "Explicit Euler": "Expliziter Euler",
+    "Symplectic Euler": "Symplektischer Euler",
     "Verlet": "Verlet",
     "RK4": "RK4",
     "Where contacts act, every scheme is first order": "Wo Kontakte wirken, ist jedes Verfahren erster Ordnung",
@@ -868,7 +868,7 @@ T["rl::WorldSettingsWidget"] = {
     "All Effects Auto": "Alle Effekte auf Auto",
     "Restore Defaults": "Standardwerte",
     "Earth gravity, 60 Hz, 8 substeps × 2 iterations, symplectic Euler, no damping, geometric-mean friction, maximum restitution, every effect on Auto":
-        "Erdschwerkraft, 60 Hz, 8 Teilschritte × 2 Iterationen, symplektisches Euler, keine Dämpfung, "
+        "Erdschwerkraft, 60 Hz, 8 Teilschritte × 2 Iterationen, symplektischer Euler, keine Dämpfung, "
         "Reibung als geometrisches Mittel, maximale Restitution, alle Effekte auf Auto",
     "Restore World Defaults": "Standardwerte der Welt wiederherstellen",
     "The frame rate must be above 0 and at most %L1 Hz (got %2 Hz).":

@@ -677,7 +677,7 @@
     </message>
     <message>
         <source>Every body and frame (%1 × %2), with the scene as OBJ text, readable by the original project&apos;s reader.</source>
-        <translation>Jeder Körper und Frame (%1 × %2), mit der Szene als OBJ-Text, lesbar für den Leser des ursprünglichen Projekts.</translation>
+        <translation>Jeder Körper und Frame (%1 × %2), mit der Szene als OBJ-Text; das ursprüngliche Projekt kann die Datei lesen.</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
@@ -1549,7 +1549,7 @@ Restitution %5 = %6</translation>
     </message>
     <message>
         <source>Used by %1.</source>
-        <translation>Verwendet von %1.</translation>
+        <translation>Für %1 verwendet.</translation>
     </message>
     <message>
         <source>Built-in preset, changed for this scene (built-in: %1 kg/m³, μ %2, e %3). %4</source>
@@ -1581,7 +1581,7 @@ Restitution %5 = %6</translation>
     </message>
     <message>
         <source>Renamed &quot;%1&quot; to &quot;%2&quot; on %3 too.</source>
-        <translation>„%1“ auch bei %3 in „%2“ umbenannt.</translation>
+        <translation>„%1“ auch für %3 in „%2“ umbenannt.</translation>
     </message>
     <message>
         <source>Material</source>
@@ -1613,7 +1613,7 @@ Restitution %5 = %6</translation>
     </message>
     <message>
         <source>Deleted &quot;%1&quot; and moved the %2 that used it to Default (Undo brings it back).</source>
-        <translation>„%1“ gelöscht; %2, die es verwendeten, haben jetzt „Default“ („Rückgängig“ stellt es wieder her).</translation>
+        <translation>„%1“ gelöscht und durch „Default“ ersetzt für %2 („Rückgängig“ stellt es wieder her).</translation>
     </message>
     <message>
         <source>Reset Preset %1</source>
@@ -2557,11 +2557,11 @@ Restitution %5 = %6</translation>
     </message>
     <message>
         <source>Explicit Euler</source>
-        <translation>Explizites Euler</translation>
+        <translation>Expliziter Euler</translation>
     </message>
     <message>
         <source>Symplectic Euler</source>
-        <translation>Symplektisches Euler</translation>
+        <translation>Symplektischer Euler</translation>
     </message>
     <message>
         <source>Verlet</source>
@@ -2685,7 +2685,7 @@ Restitution %5 = %6</translation>
     </message>
     <message>
         <source>Earth gravity, 60 Hz, 8 substeps × 2 iterations, symplectic Euler, no damping, geometric-mean friction, maximum restitution, every effect on Auto</source>
-        <translation>Erdschwerkraft, 60 Hz, 8 Teilschritte × 2 Iterationen, symplektisches Euler, keine Dämpfung, Reibung als geometrisches Mittel, maximale Restitution, alle Effekte auf Auto</translation>
+        <translation>Erdschwerkraft, 60 Hz, 8 Teilschritte × 2 Iterationen, symplektischer Euler, keine Dämpfung, Reibung als geometrisches Mittel, maximale Restitution, alle Effekte auf Auto</translation>
     </message>
     <message>
         <source>Restore World Defaults</source>

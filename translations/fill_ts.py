@@ -2,10 +2,10 @@
 """Fills translations/rigidlab_<lang>.ts from <lang>_strings.py and checks every translation.
 
 Usage (from the repository root):
-  /usr/lib/qt6/bin/lupdate -silent -locations none ui app/rigidlab -ts translations/rigidlab_de.ts \
+  /usr/lib/qt6/bin/lupdate -silent -no-obsolete -locations none ui app/rigidlab -ts translations/rigidlab_de.ts \
       -target-language de_DE
   python3 translations/fill_ts.py            # German (de)
-  /usr/lib/qt6/bin/lupdate -silent -pluralonly -locations none ui app/rigidlab -ts translations/rigidlab_en.ts \
+  /usr/lib/qt6/bin/lupdate -silent -no-obsolete -pluralonly -locations none ui app/rigidlab -ts translations/rigidlab_en.ts \
       -target-language en
   python3 translations/fill_ts.py en         # English plural forms only
 Messages without an entry in de_strings.py stay unfinished and are listed; the checks (placeholders, HTML tags,

@@ -7,6 +7,7 @@
 #include "simulation/BakeDialog.h"
 #include "ui/GuiTestSetup.h"
 
+#include <QDialog>
 #include <QLabel>
 #include <QTest>
 
@@ -54,6 +55,32 @@ private slots:
                 bad.append(label->text());
         }
         QVERIFY2(bad.isEmpty(), qPrintable(QStringLiteral("labels without a buddy: ") + bad.join(QLatin1String(", "))));
+    }
+
+    // The pre-flight check warns; it does not stand in the way: Enter bakes as asked, Escape cancels. (Cancel was the
+    // default, so Ctrl+B, Enter, Enter on any scene with a torus or Suzanne baked nothing.)
+    void preflightEnterBakesEscapeCancels_data() {
+        QTest::addColumn<int>("key");
+        QTest::addColumn<int>("result");
+        QTest::newRow("enter") << int(Qt::Key_Return) << int(QDialog::Accepted);
+        QTest::newRow("escape") << int(Qt::Key_Escape) << int(QDialog::Rejected);
+    }
+    void preflightEnterBakesEscapeCancels() {
+        QFETCH(int, key);
+        QFETCH(int, result);
+        rl::Scene scene;
+        rl::BodyDef body;
+        body.name = "Torus";
+        scene.bodies.push_back(body);
+        rl::PreflightFinding finding;
+        finding.kind = rl::PreflightKind::ConcaveDynamic;
+        finding.body = 0;
+        rl::PreflightDialog dialog(scene, {finding}, rl::PreflightDialog::Mode::ConfirmBake);
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QTest::keyClick(&dialog, Qt::Key(key));
+        QCOMPARE(dialog.result(), result);
+        QVERIFY(!dialog.isVisible());
     }
 };
 

@@ -163,9 +163,10 @@ PreflightDialog::PreflightDialog(const Scene& scene, std::vector<PreflightFindin
         layout->addWidget(m_dontShow);
         QPushButton* bake = buttons->addButton(tr("Bake anyway"), QDialogButtonBox::AcceptRole);
         bake->setObjectName("PreflightBakeAnyway");
+        // The findings are warnings: Enter bakes as the user asked, Escape cancels.
+        bake->setDefault(true);
         QPushButton* cancel = buttons->addButton(QDialogButtonBox::Cancel);
         cancel->setObjectName("PreflightCancel");
-        cancel->setDefault(true);
     } else {
         QPushButton* close = buttons->addButton(QDialogButtonBox::Close);
         close->setObjectName("PreflightClose");

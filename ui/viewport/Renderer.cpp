@@ -27,7 +27,13 @@ namespace {
 constexpr GLuint kPositionLocation = 0;
 constexpr GLuint kModelLocation = 2; // four vec4 columns: 2, 3, 4, 5
 constexpr GLuint kColourFlagsLocation = 6;
-constexpr GLuint kSlotLocation = 1; // the batch: the vertex's instance slot, as a float (exact below 2^24)
+constexpr GLuint kSlotLocation = 1;         // the batch: the vertex's instance slot, as a float (exact below 2^24)
+constexpr GLuint kCentreRadiusLocation = 7; // the batch: the mesh's centre and radius, for the outline
+
+// With more selected instances in the batch than this, the outline passes draw the whole batch (the vertex shader
+// drops the unselected instances) instead of one draw per selected mesh: selecting all of 5,000 unique boxes would
+// otherwise cost 10,000 draw calls a frame.
+constexpr int kBatchOutlineAbove = 16;
 
 #ifndef GL_TEXTURE_BUFFER
 #define GL_TEXTURE_BUFFER 0x8C2A
@@ -77,11 +83,12 @@ double processCpuMs() {
     return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
 }
 
-// The batch's program: mesh.vert compiled with RL_BATCHED defined, so both paths share the shading code.
-std::unique_ptr<QOpenGLShaderProgram> buildBatchProgram() {
-    QFile vertexFile(QStringLiteral(":/shaders/mesh.vert"));
+// The batch's programs: the instanced vertex shader compiled with RL_BATCHED defined, so that both paths share
+// their code.
+std::unique_ptr<QOpenGLShaderProgram> buildBatchProgram(const char* vertexPath, const char* fragmentPath) {
+    QFile vertexFile(QString::fromLatin1(vertexPath));
     if (!vertexFile.open(QIODevice::ReadOnly)) {
-        qWarning() << "rl::Renderer: cannot read mesh.vert";
+        qWarning() << "rl::Renderer: cannot read" << vertexPath;
         return nullptr;
     }
     QByteArray source = vertexFile.readAll();
@@ -89,9 +96,9 @@ std::unique_ptr<QOpenGLShaderProgram> buildBatchProgram() {
     source.insert(versionEnd, "#define RL_BATCHED 1\n");
     auto program = std::make_unique<QOpenGLShaderProgram>();
     if (!program->addShaderFromSourceCode(QOpenGLShader::Vertex, source) ||
-        !program->addShaderFromSourceFile(QOpenGLShader::Fragment, QStringLiteral(":/shaders/mesh.frag")) ||
+        !program->addShaderFromSourceFile(QOpenGLShader::Fragment, QString::fromLatin1(fragmentPath)) ||
         !program->link()) {
-        qWarning() << "rl::Renderer: batched mesh shader failed:" << program->log();
+        qWarning() << "rl::Renderer: batched shader" << vertexPath << "failed:" << program->log();
         return nullptr;
     }
     return program;
@@ -120,12 +127,14 @@ bool Renderer::initialize() {
     m_backgroundProgram = buildProgram(":/shaders/background.vert", ":/shaders/background.frag");
     m_gridProgram = buildProgram(":/shaders/grid.vert", ":/shaders/grid.frag");
     m_overlayProgram = buildProgram(":/shaders/overlay.vert", ":/shaders/overlay.frag");
-    m_batchProgram = buildBatchProgram();
+    m_batchProgram = buildBatchProgram(":/shaders/mesh.vert", ":/shaders/mesh.frag");
+    m_batchOutlineProgram = buildBatchProgram(":/shaders/outline.vert", ":/shaders/flat.frag");
     if (!m_meshProgram || !m_outlineProgram || !m_backgroundProgram || !m_gridProgram || !m_overlayProgram ||
-        !m_batchProgram) {
+        !m_batchProgram || !m_batchOutlineProgram) {
         // Leave nothing half-built: the widget then shows nothing rather than drawing with missing programs.
         m_meshProgram.reset();
         m_batchProgram.reset();
+        m_batchOutlineProgram.reset();
         m_outlineProgram.reset();
         m_backgroundProgram.reset();
         m_gridProgram.reset();
@@ -167,6 +176,7 @@ void Renderer::release() {
     m_instanceBufferCapacity = 0;
     m_meshProgram.reset();
     m_batchProgram.reset();
+    m_batchOutlineProgram.reset();
     m_outlineProgram.reset();
     m_backgroundProgram.reset();
     m_gridProgram.reset();
@@ -248,6 +258,7 @@ void Renderer::setInstanceAttributes(const ViewportScene& scene) {
 void Renderer::gatherSelection() {
     // The outline passes draw only these copies, so a few selected bodies among 5,000 cost a few instances.
     m_selectedSlots.clear();
+    m_selectedInBatch = 0;
     m_selectedRanges.assign(m_ranges.size(), SelectionRange{});
     for (size_t m = 0; m < m_ranges.size(); ++m) {
         m_selectedRanges[m].first = static_cast<int>(m_selectedSlots.size());
@@ -258,6 +269,8 @@ void Renderer::gatherSelection() {
                 m_selectedSlots.push_back(slot);
         }
         m_selectedRanges[m].count = static_cast<int>(m_selectedSlots.size()) - m_selectedRanges[m].first;
+        if (range.batched)
+            m_selectedInBatch += m_selectedRanges[m].count;
     }
     m_selected.resize(m_selectedSlots.size());
     for (size_t k = 0; k < m_selectedSlots.size(); ++k)
@@ -333,6 +346,7 @@ void Renderer::buildBatch() {
     struct BatchVertex {
         glm::vec3 position;
         float slot;
+        glm::vec4 centreRadius; // the mesh's box centre and half diagonal, for the outline (see outline.vert)
     };
     std::vector<BatchVertex> vertices;
     std::vector<uint32_t> closedIndices, openIndices;
@@ -345,7 +359,7 @@ void Renderer::buildBatch() {
         for (int slot = range.firstInstance; slot < range.firstInstance + range.instanceCount; ++slot) {
             const auto base = static_cast<uint32_t>(vertices.size());
             for (const glm::vec3& v : mesh.vertices)
-                vertices.push_back({v, static_cast<float>(slot)});
+                vertices.push_back({v, static_cast<float>(slot), glm::vec4(range.centre, range.radius)});
             for (const auto& t : mesh.triangles)
                 for (uint32_t k : t)
                     indices.push_back(base + k);
@@ -368,6 +382,9 @@ void Renderer::buildBatch() {
     glEnableVertexAttribArray(kSlotLocation);
     glVertexAttribPointer(kSlotLocation, 1, GL_FLOAT, GL_FALSE, sizeof(BatchVertex),
                           reinterpret_cast<const void*>(offsetof(BatchVertex, slot)));
+    glEnableVertexAttribArray(kCentreRadiusLocation);
+    glVertexAttribPointer(kCentreRadiusLocation, 4, GL_FLOAT, GL_FALSE, sizeof(BatchVertex),
+                          reinterpret_cast<const void*>(offsetof(BatchVertex, centreRadius)));
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_batchIndexBuffer);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(closedIndices.size() * sizeof(uint32_t)),
                  closedIndices.data(), GL_STATIC_DRAW);
@@ -375,20 +392,25 @@ void Renderer::buildBatch() {
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-void Renderer::drawBatch() {
+void Renderer::drawBatch(bool outlinePass) {
     if (!m_batchVao || m_batchClosedIndices + m_batchOpenIndices == 0)
         return;
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_BUFFER, m_instanceTexture);
     glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, m_instanceBuffer);
-    m_batchProgram->setUniformValue("uInstances", 1);
+    (outlinePass ? m_batchOutlineProgram : m_batchProgram)->setUniformValue("uInstances", 1);
     glBindVertexArray(m_batchVao);
-    if (m_batchClosedIndices > 0) {
+    if (outlinePass) {
+        // Never culled: pushing vertices sideways can turn a silhouette face around.
+        glDisable(GL_CULL_FACE);
+        glDrawElements(GL_TRIANGLES, m_batchClosedIndices + m_batchOpenIndices, GL_UNSIGNED_INT, nullptr);
+        ++m_drawCalls;
+    } else if (m_batchClosedIndices > 0) {
         glEnable(GL_CULL_FACE);
         glDrawElements(GL_TRIANGLES, m_batchClosedIndices, GL_UNSIGNED_INT, nullptr);
         ++m_drawCalls;
     }
-    if (m_batchOpenIndices > 0) {
+    if (m_batchOpenIndices > 0 && !outlinePass) {
         glDisable(GL_CULL_FACE);
         glDrawElements(GL_TRIANGLES, m_batchOpenIndices, GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(static_cast<size_t>(m_batchClosedIndices) * sizeof(uint32_t)));
@@ -420,7 +442,7 @@ void Renderer::drawMeshes(QOpenGLShaderProgram& program, bool outlinePass) {
         const MeshGl& gl = m_meshGl[m];
         const int first = outlinePass ? m_selectedRanges[m].first : range.firstInstance;
         const int instanceCount = outlinePass ? m_selectedRanges[m].count : range.instanceCount;
-        if (instanceCount == 0 || gl.indexCount == 0 || (range.batched && !outlinePass))
+        if (instanceCount == 0 || gl.indexCount == 0 || (range.batched && (!outlinePass || m_outlineWithBatch)))
             continue;
         if (outlinePass) {
             setUniform(program, "uMeshCentre", range.centre);
@@ -539,7 +561,7 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     setUniform(*m_batchProgram, "uViewProjection", viewProjection);
     setUniform(*m_batchProgram, "uEye", eye);
     setUniform(*m_batchProgram, "uKeyDirection", key);
-    drawBatch();
+    drawBatch(false);
     endPhase(Bodies);
 
     // Ground grid: blended, depth-tested but not written, and pulled slightly forward so that it shows on a floor
@@ -572,22 +594,34 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     // Selection outline. Pass 1 marks the selected objects in the stencil; pass 2 draws them pushed outwards in
     // screen space where the stencil is clear, which leaves a ring of constant width around each silhouette.
     if (!m_selected.empty() && options.outlineWidthPixels > 0.0f) {
+        m_outlineWithBatch = m_selectedInBatch > kBatchOutlineAbove;
+        const QVector2D viewportSize(static_cast<float>(pixelWidth), static_cast<float>(pixelHeight));
+        const QVector4D colour(options.outlineColour.r, options.outlineColour.g, options.outlineColour.b,
+                               options.outlineColour.a);
+        auto outlineDraws = [&](float widthPixels) {
+            for (QOpenGLShaderProgram* program : {m_outlineProgram.get(), m_batchOutlineProgram.get()}) {
+                const bool batch = program == m_batchOutlineProgram.get();
+                if (batch && !m_outlineWithBatch)
+                    continue;
+                program->bind();
+                setUniform(*program, "uViewProjection", viewProjection);
+                setUniform(*program, "uEye", eye);
+                program->setUniformValue("uViewportSize", viewportSize);
+                program->setUniformValue("uColour", colour);
+                program->setUniformValue("uWidthPixels", widthPixels);
+                if (batch)
+                    drawBatch(true);
+                else
+                    drawMeshes(*program, true);
+            }
+        };
         glEnable(GL_STENCIL_TEST);
-        m_outlineProgram->bind();
-        setUniform(*m_outlineProgram, "uViewProjection", viewProjection);
-        setUniform(*m_outlineProgram, "uEye", eye);
-        m_outlineProgram->setUniformValue("uViewportSize",
-                                          QVector2D(static_cast<float>(pixelWidth), static_cast<float>(pixelHeight)));
-        m_outlineProgram->setUniformValue("uColour", QVector4D(options.outlineColour.r, options.outlineColour.g,
-                                                               options.outlineColour.b, options.outlineColour.a));
-
         glDisable(GL_DEPTH_TEST);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glDepthMask(GL_FALSE);
         glStencilFunc(GL_ALWAYS, 1, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-        m_outlineProgram->setUniformValue("uWidthPixels", 0.0f);
-        drawMeshes(*m_outlineProgram, true);
+        outlineDraws(0.0f);
 
         // Depth-tested at the object's nearest depth (see outline.vert): occluders hide the outline, the floor
         // the object stands on does not.
@@ -596,8 +630,7 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glStencilFunc(GL_NOTEQUAL, 1, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-        m_outlineProgram->setUniformValue("uWidthPixels", options.outlineWidthPixels);
-        drawMeshes(*m_outlineProgram, true);
+        outlineDraws(options.outlineWidthPixels);
 
         glDisable(GL_STENCIL_TEST);
         glDepthMask(GL_TRUE);

@@ -97,7 +97,7 @@ private:
 
     void uploadMeshes();
     void buildBatch();
-    void drawBatch();
+    void drawBatch(bool outlinePass);
     void uploadInstances(unsigned buffer, size_t& capacity, const std::vector<InstanceData>& data);
     void gatherSelection();
     void drawMeshes(QOpenGLShaderProgram& program, bool outlinePass);
@@ -107,6 +107,7 @@ private:
     std::unique_ptr<QOpenGLShaderProgram> m_meshProgram;
     std::unique_ptr<QOpenGLShaderProgram> m_batchProgram; // mesh.vert with RL_BATCHED: instances from a buffer texture
     std::unique_ptr<QOpenGLShaderProgram> m_outlineProgram;
+    std::unique_ptr<QOpenGLShaderProgram> m_batchOutlineProgram; // outline.vert with RL_BATCHED
     std::unique_ptr<QOpenGLShaderProgram> m_backgroundProgram;
     std::unique_ptr<QOpenGLShaderProgram> m_gridProgram;
     std::unique_ptr<QOpenGLShaderProgram> m_overlayProgram;
@@ -126,6 +127,8 @@ private:
     unsigned m_batchIndexBuffer = 0;
     int m_batchClosedIndices = 0; // the closed meshes' triangles come first in the index buffer
     int m_batchOpenIndices = 0;
+    int m_selectedInBatch = 0; // selected instances of batched meshes: many are outlined with the whole batch
+    bool m_outlineWithBatch = false;
 
     std::vector<ViewportMesh> m_meshes;
     std::vector<MeshRange> m_ranges;

@@ -99,6 +99,8 @@ private slots:
     void boxSelectTakesInstancesWhoseCentreIsInside();
     void mouseAndKeysMoveTheCamera();
     void setTransformsMovesBodies();
+    void batchedMeshesLookLikeInstancedOnes_data();
+    void batchedMeshesLookLikeInstancedOnes();
     void fiveThousandInstances();
 
 private:
@@ -354,6 +356,78 @@ void TestViewport::setTransformsMovesBodies() {
     const QColor now = grab().pixelColor(red);
     QVERIFY2(now.red() < now.green() + 30, qPrintable(now.name()));
     QCOMPARE(m_viewport->scene().instances[1].model, models[1]);
+}
+
+void TestViewport::batchedMeshesLookLikeInstancedOnes_data() {
+    QTest::addColumn<QList<int>>("selection");
+    QTest::addColumn<int>("outlineDraws"); // per outline pass, when every box has its own mesh
+    QTest::newRow("nothing selected") << QList<int>{} << 0;
+    // A few selected boxes are outlined mesh by mesh, one draw each per pass.
+    QTest::newRow("three selected") << QList<int>{3, 17, 40} << 3;
+    // Many are outlined by drawing the whole batch once per pass (the shader drops the others).
+    QList<int> many;
+    for (int i = 1; i <= 48; i += 2)
+        many.append(i);
+    QTest::newRow("24 selected") << many << 1;
+}
+
+void TestViewport::batchedMeshesLookLikeInstancedOnes() {
+    // The same 48 boxes on a floor, once sharing one mesh (drawn instanced: 48 instances) and once with a mesh of
+    // their own each (one instance per mesh: drawn in the batch, with the instance data read from a buffer
+    // texture). Both paths must give the same picture, outline included.
+    QFETCH(QList<int>, selection);
+    QFETCH(int, outlineDraws);
+    auto makeScene = [](bool ownMeshes) {
+        rl::ViewportScene scene;
+        scene.meshes.push_back(rl::makeViewportBoxMesh(glm::vec3(4.0f, 0.25f, 4.0f)));
+        rl::ViewportInstance floor;
+        floor.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -0.25f, 0.0f));
+        floor.flags = rl::kInstanceAnchor;
+        scene.instances.push_back(floor);
+        for (int i = 0; i < 48; ++i) {
+            if (ownMeshes || i == 0)
+                scene.meshes.push_back(rl::makeViewportBoxMesh(glm::vec3(0.25f, 0.2f, 0.15f)));
+            rl::ViewportInstance box;
+            box.meshIndex = ownMeshes ? 1 + i : 1;
+            box.model =
+                rl::instanceTransform(glm::dvec3(0.7 * (i % 8 - 3.5), 0.3 + 0.5 * (i / 24), 0.7 * (i / 8 % 3 - 1)),
+                                      glm::angleAxis(0.2 * i, glm::normalize(glm::dvec3(1.0, 2.0, 0.5))));
+            box.colour = glm::vec3(0.2f + 0.015f * i, 0.8f - 0.01f * i, 0.5f);
+            box.flags = i % 11 == 5 ? rl::kInstanceSleeping : 0u;
+            scene.instances.push_back(box);
+        }
+        return scene;
+    };
+    QImage images[2];
+    int drawCalls[2] = {};
+    for (int ownMeshes = 0; ownMeshes < 2; ++ownMeshes) {
+        m_viewport = std::make_unique<rl::Viewport>();
+        m_viewport->setScene(makeScene(ownMeshes == 1));
+        m_viewport->setSelection(selection);
+        showViewport(480, 360);
+        m_viewport->camera().setYaw(glm::radians(30.0f));
+        m_viewport->camera().setPitch(glm::radians(35.0f));
+        m_viewport->frameAll();
+        images[ownMeshes] = grab();
+        drawCalls[ownMeshes] = m_viewport->drawCallsLastFrame();
+    }
+    images[1].save(QDir::tempPath() + QStringLiteral("/rl_viewport_batched.png"));
+    // Background, the floor and the boxes (instanced: the floor has one instance, so it is in the batch either
+    // way), grid, axis indicator; outlines as the data say.
+    const int selectedMeshes = selection.isEmpty() ? 0 : 1;
+    QCOMPARE(drawCalls[0], 1 + 2 + 1 + 1 + 2 * selectedMeshes);
+    QCOMPARE(drawCalls[1], 1 + 1 + 1 + 1 + 2 * outlineDraws);
+    int differing = 0;
+    for (int y = 0; y < images[0].height(); ++y)
+        for (int x = 0; x < images[0].width(); ++x) {
+            const QColor a = images[0].pixelColor(x, y);
+            const QColor b = images[1].pixelColor(x, y);
+            if (std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) > 6)
+                ++differing;
+        }
+    QVERIFY2(differing <= 20, qPrintable(QString::number(differing)));
+    const int outline = countPixelsNear(images[1], QColor(255, 143, 31), 12);
+    QCOMPARE(outline > 30, !selection.isEmpty());
 }
 
 void TestViewport::fiveThousandInstances() {

@@ -139,6 +139,18 @@ Aabb Shape::localBounds() const {
 }
 
 Aabb Shape::worldBounds(const Transform& xf) const {
+    if (kind == ShapeKind::Polyhedron && polyhedron->vertices.size() < kHillClimbMinVertices) {
+        // A small hull (a box from an OBJ file): moving its few vertices once is cheaper than six support queries,
+        // and their extremes are the same tight box.
+        const std::vector<Vec3>& vertices = polyhedron->vertices;
+        Aabb box{xf.apply(vertices[0]), xf.apply(vertices[0])};
+        for (size_t k = 1; k < vertices.size(); ++k) {
+            const Vec3 p = xf.apply(vertices[k]);
+            box.min = glm::min(box.min, p);
+            box.max = glm::max(box.max, p);
+        }
+        return box;
+    }
     // Support along the world axes gives the tight box of the rotated shape.
     Aabb box;
     for (int i = 0; i < 3; ++i) {

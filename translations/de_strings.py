@@ -65,6 +65,11 @@ T["rl::AccuracyPanel"] = {
         "%1 Frames von %2 dynamischen Körpern gegen %3 × %4 Teilschritte (Referenz: %5 ms CPU).",
     "Only the first %1 of %2 dynamic bodies were simulated.":
         "Nur die ersten %1 von %2 dynamischen Körpern wurden simuliert.",
+    # Integrator names, for when the panel shows them through tr() instead of core's ids.
+    "Explicit Euler": "Expliziter Euler",
+    "Symplectic Euler": "Symplektischer Euler",
+    "Verlet": "Verlet",
+    "RK4": "RK4",
 }
 
 T["rl::AnalysisController"] = {

@@ -512,7 +512,7 @@ T["rl::MaterialsWidget"] = {
     "Renamed \"%1\" to \"%2\" on %3 too.": "„%1“ auch für %3 in „%2“ umbenannt.",
     "Material": "Material",
     "Add Material": "Material hinzufügen",
-    "%1 copy": "%1 Kopie",
+    "%1 copy": "%1-Kopie",
     "Duplicate Material": "Material duplizieren",
     "\"%1\" is a built-in preset and cannot be deleted; Reset preset gives back its built-in values.":
         "„%1“ ist eine eingebaute Vorgabe und kann nicht gelöscht werden; „Zurücksetzen“ stellt ihre "
@@ -653,7 +653,7 @@ T["rl::SimulationController"] = {
     "Simulation": "Simulation",
     "&Play": "&Abspielen",
     "&Step": "&Einzelschritt",
-    "Advance one frame (while paused)": "Einen Frame weiter (im Pausenzustand)",
+    "Advance one frame (while paused)": "Einen Frame weiter (wenn angehalten)",
     "&Reset": "&Zurücksetzen",
     "Back to the edit pose (frame 0)": "Zurück zur Bearbeitungspose (Frame 0)",
     "&Bake…": "&Backen …",

@@ -1593,7 +1593,7 @@ Restitution %5 = %6</translation>
     </message>
     <message>
         <source>%1 copy</source>
-        <translation>%1 Kopie</translation>
+        <translation>%1-Kopie</translation>
     </message>
     <message>
         <source>Duplicate Material</source>
@@ -1961,7 +1961,7 @@ Restitution %5 = %6</translation>
     </message>
     <message>
         <source>Advance one frame (while paused)</source>
-        <translation>Einen Frame weiter (im Pausenzustand)</translation>
+        <translation>Einen Frame weiter (wenn angehalten)</translation>
     </message>
     <message>
         <source>&amp;Reset</source>

@@ -288,9 +288,12 @@ void MainWindow::syncOutlinerSelection() {
 }
 
 bool MainWindow::openFile(const QString& path) {
-    if (QFileInfo(path).suffix().compare(QLatin1String("bake"), Qt::CaseInsensitive) == 0)
-        return m_simulation->openBake(path);
-    return m_files->openScene(path);
+    // Absolute, so that Save, the export dialogs and the recent files name the same file from any directory (the
+    // README's command passes a path relative to the checkout).
+    const QString absolute = path.isEmpty() ? path : QFileInfo(path).absoluteFilePath();
+    if (QFileInfo(absolute).suffix().compare(QLatin1String("bake"), Qt::CaseInsensitive) == 0)
+        return m_simulation->openBake(absolute);
+    return m_files->openScene(absolute);
 }
 
 void MainWindow::updateTitle() {

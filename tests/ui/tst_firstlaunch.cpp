@@ -7,7 +7,9 @@
 
 #include <QApplication>
 #include <QDialog>
+#include <QDir>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QScreen>
 #include <QSettings>
 #include <QTest>
@@ -67,6 +69,26 @@ private slots:
         }
         QTest::keyClick(QApplication::focusWidget(), Qt::Key_A);
         QCOMPARE(window.selectedBodies().size(), window.document()->bodyCount());
+    }
+
+    // A path relative to the working directory (as in the README's command) is kept absolute: the title, Save, the
+    // export dialogs and the recent files must name the same file when RigidLab next starts elsewhere.
+    void relativePathIsKeptAbsolute_data() {
+        QTest::addColumn<QString>("relative");
+        QTest::newRow("obj") << "resources/scenes/stack.obj";
+        QTest::newRow("dot slash") << "./resources/scenes/mixed.obj";
+    }
+    void relativePathIsKeptAbsolute() {
+        QFETCH(QString, relative);
+        const QString previous = QDir::currentPath();
+        QVERIFY(QDir::setCurrent(QStringLiteral(RL_SOURCE_DIR)));
+        rl::MainWindow window;
+        const bool opened = window.openFile(relative);
+        QDir::setCurrent(previous);
+        QVERIFY(opened);
+        const QString path = window.document()->filePath();
+        QVERIFY2(QFileInfo(path).isAbsolute(), qPrintable(path));
+        QCOMPARE(path, QFileInfo(QStringLiteral(RL_SOURCE_DIR "/") + relative).absoluteFilePath());
     }
 
     // The first geometry for common screens: a small screen is filled, a large one gets most of it, centred, never

@@ -34,6 +34,30 @@ inline void applyRow(SolverBody& a, SolverBody& b, const ContactConstraint::Poin
     b.w += j * p.inertiaB[row];
 }
 
+// rowVelocity() and applyRow() without the side that is the static entry 0 (see solveConstraint()).
+template <bool kStaticA, bool kStaticB>
+inline Real rowVelocityT(const SolverBody& a, const SolverBody& b, const ContactConstraint::Point& p, int row,
+                         const Vec3& d) {
+    if constexpr (kStaticA)
+        return glm::dot(d, b.v) + glm::dot(b.w, p.angularB[row]);
+    else if constexpr (kStaticB)
+        return glm::dot(d, -a.v) - glm::dot(a.w, p.angularA[row]);
+    else
+        return rowVelocity(a, b, p, row, d);
+}
+
+template <bool kStaticA, bool kStaticB>
+inline void applyRowT(SolverBody& a, SolverBody& b, const ContactConstraint::Point& p, int row, const Vec3& d, Real j) {
+    if constexpr (!kStaticA) {
+        a.v -= (a.invMass * j) * d;
+        a.w -= j * p.inertiaA[row];
+    }
+    if constexpr (!kStaticB) {
+        b.v += (b.invMass * j) * d;
+        b.w += j * p.inertiaB[row];
+    }
+}
+
 } // namespace
 
 Softness softness(Real omega, Real zeta, Real h) {
@@ -114,59 +138,82 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies) {
     }
 }
 
+namespace {
+
+// One constraint's normal and friction rows. kStaticA / kStaticB: that side is the solver's entry 0 (anchors and
+// sleepers), which never moves: its velocity, position change and rotation change are zero and identity, so the
+// terms that read it and the writes to it are left out. The results are the same as the general path's.
+template <bool kStaticA, bool kStaticB>
+void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool useBias, Real inverseH,
+                     const Softness& soft, const ContactSolverSettings& settings) {
+    for (int k = 0; k < c.pointCount; ++k) {
+        ContactConstraint::Point& p = c.points[k];
+        // Current separation from the motion since the step began; anchors follow each body's rotation.
+        Vec3 d;
+        if constexpr (kStaticA)
+            d = b.dp + (b.dR * p.rB - p.rA);
+        else if constexpr (kStaticB)
+            d = -a.dp + (p.rB - a.dR * p.rA);
+        else
+            d = (b.dp - a.dp) + (b.dR * p.rB - a.dR * p.rA);
+        const Real s = glm::dot(c.normal, d) + p.baseSeparation;
+
+        Real velocityBias = 0.0, massScale = 1.0, impulseScale = 0.0;
+        if (s > 0.0) {
+            // Speculative: allow the gap to close exactly within this substep.
+            velocityBias = s * inverseH;
+        } else if (useBias) {
+            velocityBias = std::max(soft.biasRate * s, -settings.maxPushoutSpeed);
+            massScale = soft.massScale;
+            impulseScale = soft.impulseScale;
+        }
+        const Real vn = rowVelocityT<kStaticA, kStaticB>(a, b, p, 0, c.normal);
+        Real impulse = -p.normalMass * massScale * (vn + velocityBias) - impulseScale * p.normalImpulse;
+        const Real newImpulse = std::max(p.normalImpulse + impulse, 0.0);
+        impulse = newImpulse - p.normalImpulse;
+        p.normalImpulse = newImpulse;
+        // Restitution bounces off the speed at the moment of impact, which for a speculative contact comes
+        // substeps after prepare() looked: gravity has added to it since.
+        if (impulse > 0.0 && p.maxNormalImpulse == 0.0)
+            p.relativeVelocity = std::min(p.relativeVelocity, vn);
+        p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
+        applyRowT<kStaticA, kStaticB>(a, b, p, 0, c.normal, impulse);
+    }
+
+    if (!settings.friction || c.friction <= 0.0)
+        return;
+    for (int k = 0; k < c.pointCount; ++k) {
+        ContactConstraint::Point& p = c.points[k];
+        // No normal impulse and no friction impulse (a speculative point): the clamp would give zero.
+        if (p.normalImpulse == 0.0 && p.tangentImpulse[0] == 0.0 && p.tangentImpulse[1] == 0.0)
+            continue;
+        const Real maxFriction = c.friction * p.normalImpulse;
+        for (int t = 0; t < 2; ++t) {
+            const Real vt = rowVelocityT<kStaticA, kStaticB>(a, b, p, 1 + t, c.tangent[t]);
+            Real impulse = -p.tangentMass[t] * vt;
+            const Real newImpulse = std::clamp(p.tangentImpulse[t] + impulse, -maxFriction, maxFriction);
+            impulse = newImpulse - p.tangentImpulse[t];
+            p.tangentImpulse[t] = newImpulse;
+            applyRowT<kStaticA, kStaticB>(a, b, p, 1 + t, c.tangent[t], impulse);
+        }
+    }
+}
+
+} // namespace
+
 void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
     for (ContactConstraint& c : m_constraints) {
         SolverBody& a = bodies[c.bodyA];
         SolverBody& b = bodies[c.bodyB];
-        for (int k = 0; k < c.pointCount; ++k) {
-            ContactConstraint::Point& p = c.points[k];
-            // Current separation from the motion since the step began; anchors follow each body's rotation.
-            const Vec3 prA = a.dR * p.rA;
-            const Vec3 prB = b.dR * p.rB;
-            const Vec3 d = (b.dp - a.dp) + (prB - prA);
-            const Real s = glm::dot(c.normal, d) + p.baseSeparation;
-
-            Real velocityBias = 0.0, massScale = 1.0, impulseScale = 0.0;
-            if (s > 0.0) {
-                // Speculative: allow the gap to close exactly within this substep.
-                velocityBias = s * m_inverseH;
-            } else if (useBias) {
-                velocityBias = std::max(m_soft.biasRate * s, -m_settings.maxPushoutSpeed);
-                massScale = m_soft.massScale;
-                impulseScale = m_soft.impulseScale;
-            }
-            const Real vn = rowVelocity(a, b, p, 0, c.normal);
-            Real impulse = -p.normalMass * massScale * (vn + velocityBias) - impulseScale * p.normalImpulse;
-            const Real newImpulse = std::max(p.normalImpulse + impulse, 0.0);
-            impulse = newImpulse - p.normalImpulse;
-            p.normalImpulse = newImpulse;
-            // Restitution bounces off the speed at the moment of impact, which for a speculative contact comes
-            // substeps after prepare() looked: gravity has added to it since.
-            if (impulse > 0.0 && p.maxNormalImpulse == 0.0)
-                p.relativeVelocity = std::min(p.relativeVelocity, vn);
-            p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
-            applyRow(a, b, p, 0, c.normal, impulse);
-        }
+        if (c.bodyA == 0)
+            solveConstraint<true, false>(c, a, b, useBias, m_inverseH, m_soft, m_settings);
+        else if (c.bodyB == 0)
+            solveConstraint<false, true>(c, a, b, useBias, m_inverseH, m_soft, m_settings);
+        else
+            solveConstraint<false, false>(c, a, b, useBias, m_inverseH, m_soft, m_settings);
         m_counters.normalRows += static_cast<uint64_t>(c.pointCount);
-
-        if (!m_settings.friction || c.friction <= 0.0)
-            continue;
-        for (int k = 0; k < c.pointCount; ++k) {
-            ContactConstraint::Point& p = c.points[k];
-            // No normal impulse and no friction impulse (a speculative point): the clamp would give zero.
-            if (p.normalImpulse == 0.0 && p.tangentImpulse[0] == 0.0 && p.tangentImpulse[1] == 0.0)
-                continue;
-            const Real maxFriction = c.friction * p.normalImpulse;
-            for (int t = 0; t < 2; ++t) {
-                const Real vt = rowVelocity(a, b, p, 1 + t, c.tangent[t]);
-                Real impulse = -p.tangentMass[t] * vt;
-                const Real newImpulse = std::clamp(p.tangentImpulse[t] + impulse, -maxFriction, maxFriction);
-                impulse = newImpulse - p.tangentImpulse[t];
-                p.tangentImpulse[t] = newImpulse;
-                applyRow(a, b, p, 1 + t, c.tangent[t], impulse);
-            }
-        }
-        m_counters.frictionRows += 2u * static_cast<uint64_t>(c.pointCount);
+        if (m_settings.friction && c.friction > 0.0)
+            m_counters.frictionRows += 2u * static_cast<uint64_t>(c.pointCount);
     }
 }
 

@@ -1,5 +1,6 @@
-// Instanced OpenGL 3.3 renderer of the viewport: background, bodies (one draw per unique mesh), selection outline
-// and ground grid. It keeps CPU copies and uploads lazily in render(), so setters work before the GL context exists.
+// Instanced OpenGL 3.3 renderer of the viewport: background, bodies (one instanced draw per mesh with many instances,
+// one batch for all meshes with few), selection outline and ground grid. It keeps CPU copies and uploads lazily in
+// render(), so setters work before the GL context exists.
 #pragma once
 
 #include "viewport/Camera.h"

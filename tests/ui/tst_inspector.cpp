@@ -39,6 +39,22 @@ private:
     }
 
 private slots:
+    // The override check boxes stand in one column, as a list does (right-aligned they sat at four different x).
+    void overrideCheckBoxesLineUp() {
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        window.setSelectedBodies({1});
+        QList<int> lefts;
+        for (const char* name : {"InspectorDensityEnabled", "InspectorMassEnabled", "InspectorFrictionEnabled",
+                                 "InspectorRestitutionEnabled"}) {
+            auto* box = child<QCheckBox>(window, name);
+            QTRY_VERIFY(box->isVisible());
+            lefts.append(box->mapTo(window.inspector(), QPoint(0, 0)).x());
+        }
+        for (int left : lefts)
+            QCOMPARE(left, lefts.first());
+    }
+
     void anchorCheckBoxUndoRedo() {
         rl::MainWindow window;
         QVERIFY(openStack(window));

@@ -127,6 +127,7 @@ InspectorWidget::InspectorWidget(SceneDocument* document, QWidget* parent) : QWi
 
     // Material overrides
     QFormLayout* overrides = makeSection(tr("Overrides"));
+    overrides->setLabelAlignment(Qt::AlignLeft | Qt::AlignVCenter); // the check boxes in one column
     m_density = makeOverride("InspectorDensity", MaterialLibrary::kMaxDensity, 1, 10.0, tr(" kg/m³"), tr("Set Density"),
                              SetBodyDensityId, &BodyDef::density, tr("Density must be above 0 kg/m³."), false);
     overrides->addRow(m_density.enabled, m_density.value);

@@ -203,6 +203,14 @@ void MainWindow::createMenus() {
     add(Menu::Analysis, tr("A&nalysis"), "AnalysisMenu");
     add(Menu::Window, tr("&Window"), "WindowMenu");
     add(Menu::Help, tr("&Help"), "HelpMenu");
+    // The camera's framing keys, listed where users look for them. The text after the tab only shows the key: the
+    // viewport handles F and Home itself (the timeline uses Home too, and the keypad's Home is the top view).
+    QAction* frameSelected =
+        menu(Menu::View)->addAction(tr("Frame &Selected\tF"), this, [this] { m_viewport->frameSelection(); });
+    frameSelected->setObjectName("FrameSelectedAction");
+    QAction* frameAll = menu(Menu::View)->addAction(tr("Frame &All\tHome"), this, [this] { m_viewport->frameAll(); });
+    frameAll->setObjectName("FrameAllAction");
+    menu(Menu::View)->addSeparator();
     createLanguageMenu();
     // File > Export is a submenu the file controller places; others add their exporters to it.
     auto* exportMenu = new QMenu(tr("&Export"), this);

@@ -4,9 +4,12 @@
 #include "MainWindow.h"
 #include "document/SceneDocument.h"
 #include "ui/GuiTestSetup.h"
+#include "viewport/Camera.h"
+#include "viewport/Viewport.h"
 
 #include <QAction>
 #include <QLabel>
+#include <QMenu>
 #include <QTest>
 #include <QToolBar>
 
@@ -47,6 +50,28 @@ private slots:
         window.findChild<QAction*>("ToggleAnchorAction")->trigger();
         QVERIFY(window.document()->undoStack()->canUndo());
         QCOMPARE(bar->sizeHint().width(), before);
+    }
+
+    // View > Frame Selected and Frame All move the camera like F and Home in the viewport.
+    void viewMenuFramesTheCamera() {
+        rl::MainWindow window;
+        window.resize(1200, 800);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/stack.obj")));
+        QTRY_VERIFY_WITH_TIMEOUT(window.viewport()->isRendererReady(), 10000);
+        auto* frameSelected = window.findChild<QAction*>("FrameSelectedAction");
+        auto* frameAll = window.findChild<QAction*>("FrameAllAction");
+        QVERIFY(frameSelected && frameAll);
+        QVERIFY(window.menu(rl::MainWindow::Menu::View)->actions().contains(frameSelected));
+        window.viewport()->frameAll();
+        const float allDistance = window.viewport()->camera().distance();
+        window.setSelectedBodies({5});
+        frameSelected->trigger();
+        QVERIFY2(window.viewport()->camera().distance() < allDistance * 0.9f,
+                 qPrintable(QString::number(window.viewport()->camera().distance())));
+        frameAll->trigger();
+        QCOMPARE(window.viewport()->camera().distance(), allDistance);
     }
 
     void statusCountsAnchorsAfterAToggle() {

@@ -83,8 +83,10 @@ bool collideSphere(const Shape& a, const Transform& xfA, const Shape& b, const T
         sep = best - a.radius;
         pb = xfA.position + best * n;
     }
-    if (sep > spec)
+    if (sep > spec) {
+        out.normal = n; // separated along n by more than spec (see collide())
         return false;
+    }
     out.normal = n;
     out.pointCount = 1;
     setPoint(out.points[0], pb - sep * n, pb, sep, featureHash(kTagSphere, 0, 0, 0), xfA, xfB);
@@ -230,8 +232,10 @@ bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, cons
                          a.polyhedron->edges.size() * b.polyhedron->edges.size() > kSatMaxEdgePairs);
     if (useEpa && !a.isFlat() && !b.isFlat()) {
         const GjkResult g = gjkDistance(a, xfA, b, xfB);
-        if (g.distance > spec)
+        if (g.distance > spec) {
+            out.normal = g.normal;
             return false;
+        }
         Vec3 n = g.normal;
         Vec3 pa = g.pointA, pb = g.pointB;
         Real sep = g.distance;
@@ -270,8 +274,10 @@ bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, cons
     so.faceRelative = options.faceRelative;
     so.edgeRelative = options.edgeRelative;
     const SatResult sat = satPolyhedra(a, xfA, b, xfB, so);
-    if (sat.separation > spec)
+    if (sat.separation > spec) {
+        out.normal = sat.normal;
         return false;
+    }
     if (sat.feature == SatFeature::FaceA)
         return clipFaces(a, xfA, sat.face, b, xfB, true, spec, out);
     if (sat.feature == SatFeature::FaceB)
@@ -382,14 +388,17 @@ int reduceContactPoints(const Vec3* p, const Real* sep, int count, const Vec3& n
 bool collide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, Real speculativeDistance,
              Manifold& out, const CollideOptions& options) {
     out.pointCount = 0;
+    out.normal = Vec3(0.0);
     if (!finite(xfA) || !finite(xfB) || !std::isfinite(speculativeDistance))
         return false;
     const Real spec = std::max(speculativeDistance, 0.0);
     if (a.kind == ShapeKind::Sphere)
         return collideSphere(a, xfA, b, xfB, spec, out);
     if (b.kind == ShapeKind::Sphere) {
-        if (!collideSphere(b, xfB, a, xfA, spec, out))
+        if (!collideSphere(b, xfB, a, xfA, spec, out)) {
+            out.normal = -out.normal;
             return false;
+        }
         flipManifold(out);
         return true;
     }

@@ -38,6 +38,8 @@ struct CollideOptions {
 // speculative contacts for the solver. out.bodyA/bodyB are left alone; impulses are zeroed (see ContactCache).
 // localA/localB are in each shape's coordinates: pass transforms whose origin is the body's centre of mass.
 // Non-finite transforms give no contact rather than NaN.
+// On false, out.normal is either zero or a unit axis (A to B) along which the shapes are apart by more than
+// speculativeDistance: the world keeps it and tests it first next step (see World::collidePair()).
 bool collide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, Real speculativeDistance,
              Manifold& out, const CollideOptions& options = {});
 

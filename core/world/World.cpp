@@ -321,10 +321,26 @@ void World::collidePair(Contact& c) {
         }
     }
 
+    // A pair that was apart: if last step's separating axis still separates it by more than the margin, there is
+    // no contact (the SAT or GJK would say the same, since the distance is at least that), and nothing to compute.
+    // Flat polygons are left out: their one-sided rule can report a contact for shapes apart on the wrong side.
+    if (c.manifold.pointCount == 0 && c.separatingAxis != Vec3(0.0)) {
+        const Vec3 n = xfA.rotate(c.separatingAxis);
+        const Vec3 onA = xfA.apply(m_shapes[a].support(xfA.rotateInverse(n)));
+        const Vec3 onB = xfB.apply(m_shapes[b].support(xfB.rotateInverse(-n)));
+        if (glm::dot(n, onB - onA) > margin)
+            return;
+    }
+
     Manifold fresh;
     fresh.bodyA = a;
     fresh.bodyB = b;
     collide(m_shapes[a], xfA, m_shapes[b], xfB, margin, fresh);
+    const bool flat =
+        (m_shapes[a].isPolyhedral() && m_shapes[a].isFlat()) || (m_shapes[b].isPolyhedral() && m_shapes[b].isFlat());
+    c.separatingAxis = fresh.pointCount == 0 && !flat && glm::dot(fresh.normal, fresh.normal) > 0.5
+                           ? xfA.rotateInverse(fresh.normal)
+                           : Vec3(0.0);
     // Points that persist (same features, or nearly the same place) keep their impulses for warm starting.
     warmStart(c.manifold, fresh);
     c.manifold = fresh;

@@ -138,6 +138,8 @@ private:
         Mat3 cachedRotation{1.0};
         Vec3 cachedNormal{0.0};   // the manifold's normal in A's shape coordinates
         Real cachedMargin = -1.0; // < 0: nothing cached
+        // While the pair is apart: the axis (A's shape coordinates) that separated it last, or zero.
+        Vec3 separatingAxis{0.0};
     };
 
     void updateBroadphase();

@@ -12,10 +12,12 @@
 #include "viewport/ScenePresenter.h"
 #include "viewport/Viewport.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -335,6 +337,16 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
                         activateWindow();
                 });
         }
+    }
+    if (watched == m_viewport && event->type() == QEvent::Enter && isActiveWindow()) {
+        // The keys follow the mouse, as in Blender: W, G, A or F act on the viewport under it after a click in the
+        // outliner. A text field or spin box being typed in keeps the keyboard.
+        QWidget* focus = QApplication::focusWidget();
+        const bool typing =
+            focus && (qobject_cast<QLineEdit*>(focus) || qobject_cast<QAbstractSpinBox*>(focus) ||
+                      (qobject_cast<QComboBox*>(focus) && static_cast<QComboBox*>(focus)->isEditable()));
+        if (!typing)
+            m_viewport->setFocus(Qt::MouseFocusReason);
     }
     if (watched == m_viewport && event->type() == QEvent::ShortcutOverride) {
         auto* key = static_cast<QKeyEvent*>(event);

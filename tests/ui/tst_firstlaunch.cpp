@@ -9,6 +9,7 @@
 #include <QDialog>
 #include <QDir>
 #include <QDockWidget>
+#include <QEnterEvent>
 #include <QFileInfo>
 #include <QScreen>
 #include <QSettings>
@@ -89,6 +90,37 @@ private slots:
         const QString path = window.document()->filePath();
         QVERIFY2(QFileInfo(path).isAbsolute(), qPrintable(path));
         QCOMPARE(path, QFileInfo(QStringLiteral(RL_SOURCE_DIR "/") + relative).absoluteFilePath());
+    }
+
+    // As in Blender, the keys follow the mouse: after picking a body in the outliner, W with the mouse over the
+    // viewport switches to the move tool. Text fields keep the keyboard (typing a value must not turn into tools).
+    void viewportTakesKeysUnderTheMouse_data() {
+        QTest::addColumn<QString>("focused");
+        QTest::addColumn<bool>("viewportGetsFocus");
+        QTest::newRow("outliner") << "OutlinerView" << true;
+        QTest::newRow("filter box") << "OutlinerFilter" << false;
+    }
+    void viewportTakesKeysUnderTheMouse() {
+        QFETCH(QString, focused);
+        QFETCH(bool, viewportGetsFocus);
+        rl::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/stack.obj")));
+        QTRY_VERIFY_WITH_TIMEOUT(window.isActiveWindow(), 10000);
+        window.setSelectedBodies({4});
+        auto* widget = window.findChild<QWidget*>(focused);
+        QVERIFY(widget);
+        widget->setFocus(Qt::MouseFocusReason);
+        QTRY_COMPARE_WITH_TIMEOUT(QApplication::focusWidget(), widget, 10000);
+        const QPoint centre = window.viewport()->rect().center();
+        QEnterEvent enter(centre, window.viewport()->mapTo(&window, centre), window.viewport()->mapToGlobal(centre));
+        QApplication::sendEvent(window.viewport(), &enter);
+        QCOMPARE(QApplication::focusWidget() == window.viewport(), viewportGetsFocus);
+        if (viewportGetsFocus) {
+            QTest::keyClick(QApplication::focusWidget(), Qt::Key_W);
+            QCOMPARE(window.viewport()->tool(), rl::GizmoTool::Move);
+        }
     }
 
     // The first geometry for common screens: a small screen is filled, a large one gets most of it, centred, never

@@ -125,7 +125,15 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
         if (!allowed(-n))
             continue;
         const Real offset = glm::dot(n, bv[B.faceVertices[B.faces[j].first]]);
-        const Real sep = glm::dot(n, A.support(-n)) - offset;
+        Real deepest; // A's deepest vertex below B's face plane, scanned for small hulls as in queryFacesA
+        if (A.vertices.size() < kSatScanVertices) {
+            deepest = glm::dot(n, A.vertices[0]);
+            for (size_t k = 1; k < A.vertices.size(); ++k)
+                deepest = std::min(deepest, glm::dot(n, A.vertices[k]));
+        } else {
+            deepest = glm::dot(n, A.support(-n));
+        }
+        const Real sep = deepest - offset;
         if (sep > faceB.separation) {
             faceB.separation = sep;
             faceB.face = j;

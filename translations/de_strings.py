@@ -420,6 +420,8 @@ T["rl::MainWindow"] = {
     "%1[*] - RigidLab": "%1[*] – RigidLab",
     "%n bodies": ["%n Körper", "%n Körper"],
     "%n anchors": ["%n Anker", "%n Anker"],
+    "Frame &Selected\tF": "&Auswahl zeigen\tF",
+    "Frame &All\tHome": "A&lles zeigen\tHome",
 }
 
 T["rl::MaterialLibrary"] = {

@@ -1315,6 +1315,14 @@ Die Kopie wurde unter %2 behalten.</translation>
             <numerusform>%n Anker</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Frame &amp;Selected	F</source>
+        <translation>&amp;Auswahl zeigen	F</translation>
+    </message>
+    <message>
+        <source>Frame &amp;All	Home</source>
+        <translation>A&amp;lles zeigen	Home</translation>
+    </message>
 </context>
 <context>
     <name>rl::MaterialLibrary</name>

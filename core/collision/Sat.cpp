@@ -184,9 +184,11 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
             // on the far hemisphere.
             const Real cba = glm::dot(e.c, bxa);
             const Real dba = glm::dot(e.d, bxa);
+            if (!(cba * dba < 0.0))
+                continue; // most pairs end here: the other two dot products are not needed
             const Real adc = glm::dot(na, e.dxc);
             const Real bdc = glm::dot(nb, e.dxc);
-            if (!(cba * dba < 0.0 && adc * bdc < 0.0 && cba * bdc > 0.0))
+            if (!(adc * bdc < 0.0 && cba * bdc > 0.0))
                 continue;
             Vec3 axis = glm::cross(e1, e.e2);
             const Real len = glm::length(axis);

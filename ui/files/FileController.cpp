@@ -79,7 +79,27 @@ FileController::FileController(MainWindow* window)
     connect(document, &SceneDocument::materialsChanged, this, changed);
 
     // After the window is up (and main has opened the file named on its command line), not inside the constructor.
-    QTimer::singleShot(0, this, [this] { offerRecovery(); });
+    QTimer::singleShot(0, this, [this] {
+        // A scene named on the command line is what the user asked for: a modal offer of some other scene's copy in
+        // front of it would take the first key (Enter restores) and replace it. Say so and keep the copy for a
+        // start without a file; a copy of this very scene is still offered.
+        const QString opened = m_window->document()->filePath();
+        if (!opened.isEmpty()) {
+            std::optional<RecoveryStore::Orphan> orphan = m_recovery->findOrphan();
+            if (!orphan)
+                return;
+            if (QFileInfo(orphan->sourcePath) != QFileInfo(opened)) {
+                const QString name = orphan->sourcePath.isEmpty() ? tr("Untitled") : fileName(orphan->sourcePath);
+                m_window->statusBar()->showMessage(
+                    tr("Unsaved changes to “%1” from a session that did not close normally were kept; start "
+                       "RigidLab without a file to restore them.")
+                        .arg(name),
+                    30000);
+                return;
+            }
+        }
+        offerRecovery();
+    });
 }
 
 FileController::~FileController() = default;

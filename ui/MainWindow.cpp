@@ -187,6 +187,9 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::RightDockWidgetArea, historyDock);
     tabifyDockWidget(inspectorDock, historyDock);
     inspectorDock->raise();
+    // Closed docks come back from the Window menu; the controllers add theirs after these.
+    for (QDockWidget* created : {dock, inspectorDock, historyDock})
+        menu(Menu::Window)->addAction(created->toggleViewAction());
     resizeDocks({inspectorDock}, {380}, Qt::Horizontal); // a saved window state overrides this
 }
 

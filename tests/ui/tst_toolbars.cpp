@@ -8,6 +8,7 @@
 #include "viewport/Viewport.h"
 
 #include <QAction>
+#include <QDockWidget>
 #include <QLabel>
 #include <QMenu>
 #include <QTest>
@@ -50,6 +51,25 @@ private slots:
         window.findChild<QAction*>("ToggleAnchorAction")->trigger();
         QVERIFY(window.document()->undoStack()->canUndo());
         QCOMPARE(bar->sizeHint().width(), before);
+    }
+
+    // Every dock can be closed and brought back from the Window menu (the outliner, the inspector and the history
+    // could not: closed, they were gone until the settings were deleted).
+    void windowMenuBringsBackEveryDock() {
+        rl::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        const QList<QAction*> listed = window.menu(rl::MainWindow::Menu::Window)->actions();
+        const QList<QDockWidget*> docks = window.findChildren<QDockWidget*>();
+        QVERIFY(docks.size() >= 6);
+        for (QDockWidget* dock : docks) {
+            QVERIFY2(listed.contains(dock->toggleViewAction()), qPrintable(dock->objectName()));
+            QVERIFY(dock->isVisible() || window.tabifiedDockWidgets(dock).size() > 0);
+            dock->close();
+            QTRY_VERIFY(!dock->isVisible());
+            dock->toggleViewAction()->trigger();
+            QTRY_VERIFY2(dock->isVisible(), qPrintable(dock->objectName()));
+        }
     }
 
     // View > Frame Selected and Frame All move the camera like F and Home in the viewport.

@@ -42,6 +42,8 @@
 #include <QUndoView>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace rl {
 
 MainWindow::MainWindow(QWidget* parent)
@@ -339,6 +341,30 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
                     if (isVisible() && !QApplication::activeModalWidget() && (!active || !active->isVisible()))
                         activateWindow();
                 });
+        }
+    }
+    if (event->type() == QEvent::Show && watched->isWidgetType()) {
+        // Qt's own file dialog (used where the desktop offers none) opens so narrow that the size, type and date
+        // columns are elided: give it room, centred where it was, within the screen.
+        if (auto* dialog = qobject_cast<QFileDialog*>(watched); dialog && dialog->screen()) {
+            const QRect available = dialog->screen()->availableGeometry();
+            const QSize want = dialog->size().expandedTo(QSize(900, 560)).boundedTo(available.size());
+            if (want != dialog->size()) {
+                QRect rect(QPoint(0, 0), want);
+                const QWidget* over = dialog->parentWidget() ? dialog->parentWidget()->window() : nullptr;
+                rect.moveCenter(over ? over->geometry().center() : available.center());
+                rect.moveLeft(std::clamp(rect.left(), available.left(), available.right() - want.width() + 1));
+                rect.moveTop(std::clamp(rect.top(), available.top(), available.bottom() - want.height() + 1));
+                dialog->setGeometry(rect);
+            }
+            // The name takes the room; size, type and date are never elided.
+            if (auto* details = dialog->findChild<QTreeView*>(QStringLiteral("treeView"))) {
+                QHeaderView* header = details->header();
+                header->setStretchLastSection(false);
+                header->setSectionResizeMode(0, QHeaderView::Stretch);
+                for (int column = 1; column < header->count(); ++column)
+                    header->setSectionResizeMode(column, QHeaderView::ResizeToContents);
+            }
         }
     }
     if (watched == m_viewport && event->type() == QEvent::Enter && isActiveWindow()) {

@@ -10,6 +10,7 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QEnterEvent>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QScreen>
 #include <QSettings>
@@ -121,6 +122,32 @@ private slots:
             QTest::keyClick(QApplication::focusWidget(), Qt::Key_W);
             QCOMPARE(window.viewport()->tool(), rl::GizmoTool::Move);
         }
+    }
+
+    // File dialogs open large enough to read: Qt's own dialog (used where no desktop dialog is) opened so narrow that
+    // the size, type and date columns were elided ("377...tes", "pla...ent").
+    void fileDialogsOpenWideEnough() {
+        rl::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QFileDialog dialog(&window, QStringLiteral("x"), QStringLiteral(RL_SOURCE_DIR));
+        dialog.setOption(QFileDialog::DontUseNativeDialog);
+        const QSize before = dialog.sizeHint();
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        const QSize available = window.screen()->availableGeometry().size();
+        const QSize want = QSize(900, 560).boundedTo(available);
+        QVERIFY2(dialog.width() >= want.width() && dialog.height() >= want.height(),
+                 qPrintable(QStringLiteral("%1x%2 (hint %3x%4)")
+                                .arg(dialog.width())
+                                .arg(dialog.height())
+                                .arg(before.width())
+                                .arg(before.height())));
+        QVERIFY(QRect(QPoint(0, 0), available).contains(dialog.frameGeometry()));
+        // Centred over the window, not in the screen's corner.
+        QVERIFY2((dialog.geometry().center() - window.geometry().center()).manhattanLength() < 40,
+                 qPrintable(QStringLiteral("dialog at %1,%2").arg(dialog.x()).arg(dialog.y())));
+        dialog.reject();
     }
 
     // The first geometry for common screens: a small screen is filled, a large one gets most of it, centred, never

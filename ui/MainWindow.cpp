@@ -133,6 +133,7 @@ MainWindow::MainWindow(QWidget* parent)
     });
     updateTitle();
     updateStatus();
+    setSelectedBodies({}); // the selection read-out from the start, not only after the first pick
 }
 
 MainWindow::~MainWindow() {

@@ -94,6 +94,16 @@ private slots:
         QCOMPARE(window.viewport()->camera().distance(), allDistance);
     }
 
+    // The status bar's read-outs are filled from the start, with no scene and before any selection.
+    void statusReadOutsFilledAtStart() {
+        rl::MainWindow window;
+        for (const char* name : {"SelectionLabel", "BodyCountLabel"}) {
+            auto* label = window.findChild<QLabel*>(name);
+            QVERIFY(label);
+            QVERIFY2(!label->text().isEmpty(), name);
+        }
+    }
+
     void statusCountsAnchorsAfterAToggle() {
         rl::MainWindow window;
         QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/stack.obj")));

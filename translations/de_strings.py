@@ -325,6 +325,9 @@ T["rl::FileController"] = {
     "Could not restore the autosaved copy.": "Die automatisch gesicherte Kopie konnte nicht wiederhergestellt werden.",
     "%1\n\nThe copy was kept at %2.": "%1\n\nDie Kopie wurde unter %2 behalten.",
     "Restored unsaved changes to %1": "Ungespeicherte Änderungen an %1 wiederhergestellt",
+    "Unsaved changes to “%1” from a session that did not close normally were kept; start RigidLab without a file to restore them.":
+        "Ungespeicherte Änderungen an „%1“ aus einer nicht normal beendeten Sitzung wurden aufbewahrt; starten Sie "
+        "RigidLab ohne Datei, um sie wiederherzustellen.",
     "Scenes (%1)": "Szenen (%1)",
     "Scenes and bakes (%1 *.bake)": "Szenen und Backergebnisse (%1 *.bake)",
     "Bakes (*.bake)": "Backergebnisse (*.bake)",

@@ -997,6 +997,10 @@ Die Kopie wurde unter %2 behalten.</translation>
         <source>RigidLab</source>
         <translation>RigidLab</translation>
     </message>
+    <message>
+        <source>Unsaved changes to “%1” from a session that did not close normally were kept; start RigidLab without a file to restore them.</source>
+        <translation>Ungespeicherte Änderungen an „%1“ aus einer nicht normal beendeten Sitzung wurden aufbewahrt; starten Sie RigidLab ohne Datei, um sie wiederherzustellen.</translation>
+    </message>
 </context>
 <context>
     <name>rl::InspectorWidget</name>

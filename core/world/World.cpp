@@ -431,11 +431,14 @@ void World::buildIslands() {
 int World::substepRefinement(Real massRatio) const {
     // A soft contact settles F / (m_eff omega^2) deep, and omega grows with the substep rate, so k times the
     // substeps make a light body under a heavy one sink k^2 times less. The 1 kg cube under 1,000 kg settles
-    // 1.8 cm deep at the default 8 substeps (measured): the depth grows with the ratio, so the factor grows with
-    // its square root, from 1 at refineMassRatio.
+    // 1.8 cm deep at 8 substeps (measured): the depth grows with the ratio, so the substeps it needs grow with its
+    // square root, from refineSubsteps at refineMassRatio. The island gets that many substeps in all, whatever the
+    // scene's own count: a scene written with 4 substeps (DESIGN.md's example) let the same pair sink 2.6 cm when
+    // the factor multiplied the scene's count instead.
     if (!(massRatio > m_tuning.refineMassRatio))
         return 1;
-    const Real k = std::ceil(std::sqrt(massRatio / m_tuning.refineMassRatio) - 1e-9);
+    const Real needed = m_tuning.refineSubsteps * std::sqrt(massRatio / m_tuning.refineMassRatio);
+    const Real k = std::ceil(needed / m_substeps - 1e-9);
     return static_cast<int>(std::clamp<Real>(k, 1.0, static_cast<Real>(m_tuning.maxSubstepRefinement)));
 }
 

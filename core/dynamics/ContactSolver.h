@@ -71,15 +71,17 @@ struct ContactConstraint {
         Real normalImpulse = 0.0;
         Real tangentImpulse[2] = {0.0, 0.0};
         Real maxNormalImpulse = 0.0;
-        Real relativeVelocity = 0.0; // normal approach speed before the solve, for restitution
+        Real relativeVelocity = 0.0; // normal approach speed at the step start, at impact once it pushes
     };
     uint32_t bodyA = 0, bodyB = 0;
     Vec3 normal{0.0, 1.0, 0.0};
     Vec3 tangent[2];
     Real friction = 0.0;
     Real restitution = 0.0;
+    Real approachAcceleration = 0.0; // normal relative acceleration from gravity, for the approach speed
     int pointCount = 0;
     Point points[4];
+    uint8_t order[4] = {0, 1, 2, 3}; // the normal rows' solve order: by separation at the step start
 };
 
 class ContactSolver {
@@ -92,6 +94,9 @@ public:
                  std::span<const Real> restitution, std::span<const SolverBody> bodies, std::span<const Vec3> centers,
                  Real h, const ContactSolverSettings& settings);
 
+    // Called once per substep, after the velocities were integrated: starts the substep (the time since the step
+    // began, which turns the approach speed recorded by prepare() into the speed at impact) and applies the
+    // impulses of the last step.
     void warmStart(std::span<SolverBody> bodies);
     // useBias = true: the soft solve that pushes overlap apart; false: the relax pass that removes the bias velocity.
     void solve(std::span<SolverBody> bodies, bool useBias);
@@ -114,6 +119,8 @@ private:
     std::vector<ContactConstraint> m_constraints;
     ContactSolverSettings m_settings;
     Real m_inverseH = 0.0;
+    Real m_h = 0.0;
+    Real m_elapsed = 0.0; // time from the step start to the end of the current substep's velocity update
     Softness m_soft;
     ContactSolverCounters m_counters;
 };

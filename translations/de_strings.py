@@ -164,6 +164,32 @@ T["rl::CompareBakesDialog"] = {
         "%1 von %2 Körpern weichen stärker als die Toleranz ab.",
 }
 
+# The core's body warnings (core/scene/BodyProperties.cpp) and effect reasons (core/world/Effects.cpp), shown
+# through ui/document/CoreText.cpp.
+T["rl::CoreText"] = {
+    "concave: simulated as its convex hull": "konkav: wird als seine konvexe Hülle simuliert",
+    "smaller than 2 cm: may need more substeps": "kleiner als 2 cm: braucht eventuell mehr Teilschritte",
+    "forced on": "erzwungen ein",
+    "forced off": "erzwungen aus",
+    "dynamic bodies and non-zero gravity": "dynamische Körper und Schwerkraft ungleich null",
+    "no dynamic body or zero gravity": "kein dynamischer Körper oder keine Schwerkraft",
+    "some pair has friction above zero": "ein Paar hat Reibung über null",
+    "every pair's combined friction is zero": "die kombinierte Reibung jedes Paars ist null",
+    "bodies can rotate": "Körper können sich drehen",
+    "only frictionless, non-spinning spheres (rotation cannot change)":
+        "nur reibungsfreie, nicht rotierende Kugeln (die Drehung kann sich nicht ändern)",
+    "some pair has restitution above zero": "ein Paar hat Restitution über null",
+    "every pair's combined restitution is zero": "die kombinierte Restitution jedes Paars ist null",
+    "damping is set": "Dämpfung ist gesetzt",
+    "no damping is set": "keine Dämpfung gesetzt",
+    "bodies can come to rest on anchors": "Körper können auf Ankern zur Ruhe kommen",
+    "nothing to come to rest on (no gravity or no anchor)":
+        "nichts, worauf Körper zur Ruhe kommen (keine Schwerkraft oder kein Anker)",
+    "some body may move more than half its size in one frame":
+        "ein Körper kann sich in einem Frame um mehr als seine halbe Größe bewegen",
+    "no body moves fast relative to its size": "kein Körper ist schnell im Verhältnis zu seiner Größe",
+}
+
 T["rl::EditController"] = {
     "Edit": "Bearbeiten",
     "&Undo": "&Rückgängig",
@@ -389,9 +415,6 @@ T["rl::InspectorWidget"] = {
     "%1 kg": "%1 kg",
     "%1 kg m²": "%1 kg m²",
     "none (sphere)": "keine (Kugel)",
-    # The warnings core/scene/BodyProperties.cpp gives, for when the widget passes them through tr().
-    "concave: simulated as its convex hull": "konkav: wird als seine konvexe Hülle simuliert",
-    "smaller than 2 cm: may need more substeps": "kleiner als 2 cm: braucht eventuell mehr Teilschritte",
 }
 
 T["rl::MainWindow"] = {
@@ -903,24 +926,4 @@ T["rl::WorldSettingsWidget"] = {
     "forced": "erzwungen",
     "Auto: %1": "Auto: %1",
     "Auto would turn it %1: %2": "Auto würde es auf „%1“ stellen: %2",
-    # The reasons core/world/Effects.cpp gives, for when the widget passes them through tr().
-    "forced on": "erzwungen ein",
-    "forced off": "erzwungen aus",
-    "dynamic bodies and non-zero gravity": "dynamische Körper und Schwerkraft ungleich null",
-    "no dynamic body or zero gravity": "kein dynamischer Körper oder keine Schwerkraft",
-    "some pair has friction above zero": "ein Paar hat Reibung über null",
-    "every pair's combined friction is zero": "die kombinierte Reibung jedes Paars ist null",
-    "bodies can rotate": "Körper können sich drehen",
-    "only frictionless, non-spinning spheres (rotation cannot change)":
-        "nur reibungsfreie, nicht rotierende Kugeln (die Drehung kann sich nicht ändern)",
-    "some pair has restitution above zero": "ein Paar hat Restitution über null",
-    "every pair's combined restitution is zero": "die kombinierte Restitution jedes Paars ist null",
-    "damping is set": "Dämpfung ist gesetzt",
-    "no damping is set": "keine Dämpfung gesetzt",
-    "bodies can come to rest on anchors": "Körper können auf Ankern zur Ruhe kommen",
-    "nothing to come to rest on (no gravity or no anchor)":
-        "nichts, worauf Körper zur Ruhe kommen (keine Schwerkraft oder kein Anker)",
-    "some body may move more than half its size in one frame":
-        "ein Körper kann sich in einem Frame um mehr als seine halbe Größe bewegen",
-    "no body moves fast relative to its size": "kein Körper ist schnell im Verhältnis zu seiner Größe",
 }

@@ -453,6 +453,81 @@
     </message>
 </context>
 <context>
+    <name>rl::CoreText</name>
+    <message>
+        <source>concave: simulated as its convex hull</source>
+        <translation>konkav: wird als seine konvexe Hülle simuliert</translation>
+    </message>
+    <message>
+        <source>smaller than 2 cm: may need more substeps</source>
+        <translation>kleiner als 2 cm: braucht eventuell mehr Teilschritte</translation>
+    </message>
+    <message>
+        <source>forced on</source>
+        <translation>erzwungen ein</translation>
+    </message>
+    <message>
+        <source>forced off</source>
+        <translation>erzwungen aus</translation>
+    </message>
+    <message>
+        <source>dynamic bodies and non-zero gravity</source>
+        <translation>dynamische Körper und Schwerkraft ungleich null</translation>
+    </message>
+    <message>
+        <source>no dynamic body or zero gravity</source>
+        <translation>kein dynamischer Körper oder keine Schwerkraft</translation>
+    </message>
+    <message>
+        <source>some pair has friction above zero</source>
+        <translation>ein Paar hat Reibung über null</translation>
+    </message>
+    <message>
+        <source>every pair&apos;s combined friction is zero</source>
+        <translation>die kombinierte Reibung jedes Paars ist null</translation>
+    </message>
+    <message>
+        <source>bodies can rotate</source>
+        <translation>Körper können sich drehen</translation>
+    </message>
+    <message>
+        <source>only frictionless, non-spinning spheres (rotation cannot change)</source>
+        <translation>nur reibungsfreie, nicht rotierende Kugeln (die Drehung kann sich nicht ändern)</translation>
+    </message>
+    <message>
+        <source>some pair has restitution above zero</source>
+        <translation>ein Paar hat Restitution über null</translation>
+    </message>
+    <message>
+        <source>every pair&apos;s combined restitution is zero</source>
+        <translation>die kombinierte Restitution jedes Paars ist null</translation>
+    </message>
+    <message>
+        <source>damping is set</source>
+        <translation>Dämpfung ist gesetzt</translation>
+    </message>
+    <message>
+        <source>no damping is set</source>
+        <translation>keine Dämpfung gesetzt</translation>
+    </message>
+    <message>
+        <source>bodies can come to rest on anchors</source>
+        <translation>Körper können auf Ankern zur Ruhe kommen</translation>
+    </message>
+    <message>
+        <source>nothing to come to rest on (no gravity or no anchor)</source>
+        <translation>nichts, worauf Körper zur Ruhe kommen (keine Schwerkraft oder kein Anker)</translation>
+    </message>
+    <message>
+        <source>some body may move more than half its size in one frame</source>
+        <translation>ein Körper kann sich in einem Frame um mehr als seine halbe Größe bewegen</translation>
+    </message>
+    <message>
+        <source>no body moves fast relative to its size</source>
+        <translation>kein Körper ist schnell im Verhältnis zu seiner Größe</translation>
+    </message>
+</context>
+<context>
     <name>rl::EditController</name>
     <message>
         <source>Edit</source>

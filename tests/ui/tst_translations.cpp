@@ -4,7 +4,10 @@
 // with the right one, the main window comes up in German when the translator is installed, and in German no two items
 // of a menu (nor two titles of the menu bar) share an accelerator letter.
 #include "MainWindow.h"
+#include "document/CoreText.h"
+#include "scene/BodyProperties.h"
 #include "ui/GuiTestSetup.h"
+#include "world/Effects.h"
 
 #include <QMenu>
 #include <QMenuBar>
@@ -17,6 +20,7 @@
 #include <QXmlStreamReader>
 
 #include <algorithm>
+#include <set>
 
 namespace {
 
@@ -325,6 +329,68 @@ private slots:
         }
         QCoreApplication::removeTranslator(&translator);
         QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1Char('\n'))));
+    }
+
+    // The core's body warnings and effect reasons reach the inspector and the World dock through coreText(): every
+    // phrase the core can give (all 128 combinations of scene facts, with and without damping, in auto and forced
+    // modes, and the warnings of a concave body and a 1 cm one) has a German translation.
+    void corePhrasesAreTranslated() {
+        std::set<std::string> phrases;
+        for (int bits = 0; bits < 128; ++bits) {
+            rl::SceneFacts facts;
+            bool* flags[] = {&facts.anyDynamic,  &facts.anyAnchor,     &facts.anyNonSphereDynamic,
+                             &facts.anySpinning, &facts.frictionPairs, &facts.restitutionPairs,
+                             &facts.fastBodies};
+            for (int k = 0; k < 7; ++k)
+                *flags[k] = (bits >> k) & 1;
+            for (const double damping : {0.0, 0.5}) {
+                rl::Scene scene;
+                scene.world.linearDamping = damping;
+                for (const rl::EffectMode mode : {rl::EffectMode::Auto, rl::EffectMode::On, rl::EffectMode::Off}) {
+                    rl::EffectsSetting setting;
+                    setting.modes.fill(mode);
+                    for (const std::string& reason : rl::decideEffects(scene, setting, facts).reasons)
+                        phrases.insert(reason.rfind("auto: ", 0) == 0 ? reason.substr(6) : reason);
+                }
+            }
+        }
+        rl::Scene scene;
+        rl::BodyDef concave; // an L of two unit cubes: its hull is larger than the mesh
+        concave.name = "L";
+        concave.shape.type = rl::ShapeType::Mesh;
+        concave.shape.points = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0},
+                                {0, 0, 1}, {2, 0, 1}, {2, 1, 1}, {1, 1, 1}, {1, 2, 1}, {0, 2, 1}};
+        concave.shape.triangles = {{0, 2, 1},   {0, 3, 2},  {0, 5, 3},  {3, 5, 4},   {6, 7, 8}, {6, 8, 9}, {6, 9, 11},
+                                   {9, 10, 11}, {0, 1, 7},  {0, 7, 6},  {1, 2, 8},   {1, 8, 7}, {2, 3, 9}, {2, 9, 8},
+                                   {3, 4, 10},  {3, 10, 9}, {4, 5, 11}, {4, 11, 10}, {5, 0, 6}, {5, 6, 11}};
+        rl::BodyDef tiny;
+        tiny.name = "Tiny";
+        tiny.shape.halfExtents = rl::Vec3(0.005);
+        size_t warnings = 0;
+        for (const rl::BodyDef& body : {concave, tiny}) {
+            const auto props = rl::computeBodyProperties(scene, body);
+            QVERIFY2(props, body.name.c_str());
+            for (const std::string& warning : props->warnings) {
+                phrases.insert(warning);
+                ++warnings;
+            }
+        }
+        QVERIFY2(warnings >= 2, "the concave and the 1 cm body should each have a warning");
+        QVERIFY(phrases.size() >= 16);
+
+        QTranslator translator;
+        QVERIFY(translator.load(QStringLiteral(":/i18n/rigidlab_de.qm")));
+        QCoreApplication::installTranslator(&translator);
+        QStringList untranslated;
+        for (const std::string& phrase : phrases)
+            if (rl::coreText(phrase) == QString::fromStdString(phrase))
+                untranslated << QString::fromStdString(phrase);
+        const QString concaveGerman = rl::coreText("concave: simulated as its convex hull");
+        QCoreApplication::removeTranslator(&translator);
+        QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join(QLatin1Char('\n'))));
+        QCOMPARE(concaveGerman, QStringLiteral("konkav: wird als seine konvexe Hülle simuliert"));
+        QCOMPARE(rl::coreText("concave: simulated as its convex hull"),
+                 QStringLiteral("concave: simulated as its convex hull"));
     }
 
     void mainWindowComesUpInGerman() {

@@ -1,5 +1,6 @@
 #include "inspector/InspectorWidget.h"
 
+#include "document/CoreText.h"
 #include "document/SceneDocument.h"
 #include "document/UndoIds.h"
 #include "document/commands/SetBodiesCommand.h"
@@ -451,7 +452,7 @@ void InspectorWidget::refreshComputed() {
     m_hullLabel->setText(props->hullVertexCount > 0 ? QString::number(props->hullVertexCount) : tr("none (sphere)"));
     QStringList warnings;
     for (const std::string& warning : props->warnings)
-        warnings.append(QString::fromStdString(warning));
+        warnings.append(coreText(warning));
     m_warningsLabel->setText(warnings.isEmpty() ? tr("none") : warnings.join('\n'));
 }
 

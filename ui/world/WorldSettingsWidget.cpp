@@ -1,5 +1,6 @@
 #include "world/WorldSettingsWidget.h"
 
+#include "document/CoreText.h"
 #include "document/SceneDocument.h"
 #include "document/commands/SetWorldSettingsCommand.h"
 #include "materials/MaterialLibrary.h"
@@ -91,12 +92,10 @@ QString effectToolTip(Effect e) {
     return {};
 }
 
-// The core's reasons read "auto: <why>", "forced on" or "forced off"; the panel shows the why.
+// The core's reasons read "auto: <why>", "forced on" or "forced off"; the panel shows the why, translated.
 QString reasonText(const std::string& reason) {
-    QString text = QString::fromStdString(reason);
-    if (text.startsWith(QLatin1String("auto: ")))
-        text = text.mid(6);
-    return text;
+    const std::string prefix = "auto: ";
+    return coreText(reason.rfind(prefix, 0) == 0 ? reason.substr(prefix.size()) : reason);
 }
 
 } // namespace
@@ -525,7 +524,7 @@ void WorldSettingsWidget::refreshEffects() {
         const bool on = m_decision->effects.on[k];
         const EffectMode mode = w.effects.modes[k];
         QString text;
-        QString toolTip = QString::fromStdString(m_decision->reasons[k]);
+        QString toolTip = reasonText(m_decision->reasons[k]);
         if (mode == EffectMode::Auto) {
             text = QStringLiteral("%1 · %2").arg(state(on), reasonText(m_decision->reasons[k]).toHtmlEscaped());
         } else {

@@ -4,6 +4,7 @@
 #include "io/BakeFile.h"
 #include "io/SceneImport.h"
 #include "scene/SceneLibrary.h"
+#include "timeline/TimelineView.h"
 #include "timeline/TimelineWidget.h"
 #include "ui/GuiTestSetup.h"
 #include "ui/SimulationTestUtil.h"
@@ -20,6 +21,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 using namespace rl;
 using namespace rl::test;
@@ -139,6 +141,43 @@ private slots:
         if (frame == 0)
             for (int i = 0; i < window.document()->bodyCount(); ++i)
                 QVERIFY(shownModel(window, i) == editModel(window, i));
+    }
+
+    // The same with the mouse in the whole editor: a click on the ruler jumps, a drag scrubs frame by frame, and
+    // after each the viewport shows that baked frame.
+    void mouseScrubShowsTheRightFrame() {
+        MainWindow window;
+        QVERIFY(showWindow(window));
+        window.document()->reset(tumblingBoxes(), QString());
+        ModalGuard guard;
+        SimulationController* sim = window.simulation();
+        QVERIFY(bakeAndWait(sim, 45));
+        std::shared_ptr<const Bake> bake = sim->currentBake();
+        QVERIFY(bake);
+        TimelineView* view = sim->timeline()->view();
+        QVERIFY(view->isVisible());
+        auto at = [&](int frame) {
+            return QPoint(static_cast<int>(std::lround(view->xForFrame(frame))), TimelineView::kRulerHeight / 2);
+        };
+        auto shows = [&](int frame) {
+            QCOMPARE(sim->timeline()->currentFrame(), frame);
+            QCOMPARE(sim->display(), SimulationController::Display::Baked);
+            const QString problem = mismatch(window, *bake, frame, 1e-4);
+            QVERIFY2(problem.isEmpty(), qPrintable(problem));
+        };
+        QTest::mouseClick(view, Qt::LeftButton, {}, at(30));
+        shows(30);
+        QSignalSpy spy(sim->timeline(), &TimelineWidget::currentFrameChanged);
+        QTest::mousePress(view, Qt::LeftButton, {}, at(12));
+        shows(12);
+        for (int frame : {17, 25, 44, 3}) {
+            QTest::mouseMove(view, at(frame));
+            shows(frame);
+        }
+        QTest::mouseRelease(view, Qt::LeftButton, {}, at(3));
+        QCOMPARE(spy.count(), 5);
+        QTest::mouseMove(view, at(40)); // released: moving no longer scrubs
+        shows(3);
     }
 
     // Space plays a current bake through the timeline, and the step action shows the next baked frame.

@@ -84,6 +84,16 @@ Scene riskyScene() {
     heavy.mass = 1000.0;
     scene.bodies.push_back(light);
     scene.bodies.push_back(heavy);
+    BodyDef bracket; // an L of two 0.5 m cubes: concave
+    bracket.name = "Bracket";
+    bracket.position = {-4, 1, 0};
+    bracket.shape.type = ShapeType::Mesh;
+    bracket.shape.points = {{0, 0, 0},   {1, 0, 0},   {1, 0.5, 0},   {0.5, 0.5, 0},   {0.5, 1, 0},   {0, 1, 0},
+                            {0, 0, 0.5}, {1, 0, 0.5}, {1, 0.5, 0.5}, {0.5, 0.5, 0.5}, {0.5, 1, 0.5}, {0, 1, 0.5}};
+    bracket.shape.triangles = {{0, 2, 1},   {0, 3, 2},  {0, 5, 3},  {3, 5, 4},   {6, 7, 8}, {6, 8, 9}, {6, 9, 11},
+                               {9, 10, 11}, {0, 1, 7},  {0, 7, 6},  {1, 2, 8},   {1, 8, 7}, {2, 3, 9}, {2, 9, 8},
+                               {3, 4, 10},  {3, 10, 9}, {4, 5, 11}, {4, 11, 10}, {5, 0, 6}, {5, 6, 11}};
+    scene.bodies.push_back(bracket);
     return scene;
 }
 
@@ -317,11 +327,15 @@ private slots:
             list->setCurrentItem(list->topLevelItem(2));
             if (!fix->text().contains("Light") || !fix->text().contains("100:1"))
                 seen << "wrong fix: " + fix->text();
+            list->setCurrentItem(list->topLevelItem(3));
+            if (!fix->text().contains("Bracket") || !fix->text().contains("convex parts"))
+                seen << "wrong fix: " + fix->text();
             screenshot(dialog, "preflight");
             dialog->findChild<QPushButton*>("PreflightCancel")->click();
         });
         QVERIFY(!window.analysis()->confirmPreflight());
-        QCOMPARE(seen, (QStringList{"Very small body|Grain", "May pass through|Grain", "Extreme mass ratio|Light"}));
+        QCOMPARE(seen, (QStringList{"Very small body|Grain", "May pass through|Grain", "Extreme mass ratio|Light",
+                                    "Concave body|Bracket"}));
 
         // Bake anyway.
         onModal("PreflightDialog",
@@ -388,7 +402,7 @@ private slots:
         auto* dialog = window.findChild<PreflightDialog*>("PreflightDialog");
         QVERIFY(dialog);
         QTRY_VERIFY(dialog->isVisible());
-        QCOMPARE(dialog->findings().size(), size_t(3));
+        QCOMPARE(dialog->findings().size(), size_t(4));
         QVERIFY(!dialog->findChild<QCheckBox*>("PreflightDontShow"));
         // Clicking a finding selects its body.
         auto* list = dialog->findChild<QTreeWidget*>("PreflightList");

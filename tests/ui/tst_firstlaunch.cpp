@@ -204,6 +204,37 @@ private slots:
         QVERIFY2(inspector->width() >= 300, qPrintable(QString::number(inspector->width())));
         QVERIFY(window.viewport()->width() > inspector->width());
     }
+    // What the user arranged comes back at the next start: the window's size and the dock layout (a closed dock
+    // stays closed, a moved dock stays where it was put), saved when the window closes.
+    void layoutAndGeometryPersist() {
+        QSize arranged;
+        {
+            rl::MainWindow window;
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            window.resize(1000, 700);
+            QTRY_COMPARE(window.size(), QSize(1000, 700));
+            arranged = window.size();
+            auto* outliner = window.findChild<QDockWidget*>("OutlinerDock");
+            auto* timeline = window.findChild<QDockWidget*>("TimelineDock");
+            QVERIFY(outliner && timeline);
+            outliner->close();
+            window.addDockWidget(Qt::TopDockWidgetArea, timeline);
+            QVERIFY(window.close());
+        }
+        QVERIFY(QSettings().contains("mainwindow/geometry"));
+        QVERIFY(QSettings().contains("mainwindow/state"));
+        rl::MainWindow again;
+        again.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&again));
+        QCOMPARE(again.size(), arranged);
+        auto* outliner = again.findChild<QDockWidget*>("OutlinerDock");
+        auto* timeline = again.findChild<QDockWidget*>("TimelineDock");
+        QVERIFY(!outliner->isVisible());
+        QVERIFY(timeline->isVisible());
+        QCOMPARE(again.dockWidgetArea(timeline), Qt::TopDockWidgetArea);
+        QVERIFY(again.findChild<QDockWidget*>("InspectorDock")->isVisible());
+    }
 };
 
 QTEST_MAIN(TestFirstLaunch)

@@ -8,6 +8,9 @@
 #include <QAbstractItemModel>
 #include <QApplication>
 #include <QDir>
+#include <QFileInfo>
+#include <QIcon>
+#include <QImage>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QSurfaceFormat>
@@ -27,6 +30,10 @@ private slots:
         QTest::addColumn<int>("anchors");
         QTest::newRow("stack") << "stack.obj" << 11 << 1;
         QTest::newRow("pyramid") << "pyramid.obj" << 56 << 1;
+        QTest::newRow("mixed") << "mixed.obj" << 9 << 2;
+        // Formats that go through assimp open the same way.
+        QTest::newRow("glTF") << RL_SOURCE_DIR "/tests/data/acceptance/tower20.glb" << 21 << 1;
+        QTest::newRow("FBX") << RL_SOURCE_DIR "/tests/data/acceptance/tower20.fbx" << 21 << 1;
     }
     void opensSceneIntoOutliner() {
         QFETCH(QString, file);
@@ -35,16 +42,33 @@ private slots:
         rl::MainWindow window;
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/") + file));
+        const QString path = file.startsWith('/') ? file : QStringLiteral(RL_SOURCE_DIR "/resources/scenes/") + file;
+        QVERIFY(window.openFile(path));
         QAbstractItemModel* model = window.outlinerView()->model();
         QCOMPARE(model->rowCount(), bodies);
         int anchorRows = 0;
-        for (int row = 0; row < model->rowCount(); ++row)
-            anchorRows += model->index(row, 0).data(rl::OutlinerModel::AnchorRole).toBool() ? 1 : 0;
+        QImage anchorIcon, dynamicIcon;
+        for (int row = 0; row < model->rowCount(); ++row) {
+            const bool anchor = model->index(row, 0).data(rl::OutlinerModel::AnchorRole).toBool();
+            anchorRows += anchor ? 1 : 0;
+            QCOMPARE(anchor, window.document()->body(row).anchor);
+            // The material column names the body's material; the name column's icon tells anchors from the rest.
+            QCOMPARE(model->index(row, rl::OutlinerModel::MaterialColumn).data().toString(),
+                     QString::fromStdString(window.document()->body(row).material));
+            const QIcon icon = qvariant_cast<QIcon>(model->index(row, 0).data(Qt::DecorationRole));
+            QVERIFY(!icon.isNull());
+            const QImage image = icon.pixmap(16, 16).toImage();
+            if (anchorIcon.isNull() && anchor)
+                anchorIcon = image;
+            if (dynamicIcon.isNull() && !anchor)
+                dynamicIcon = image;
+            QCOMPARE(image, anchor ? anchorIcon : dynamicIcon);
+        }
         QCOMPARE(anchorRows, anchors);
+        QVERIFY(anchorIcon != dynamicIcon);
         // Names in file order, as the document holds them.
         QCOMPARE(model->index(0, 0).data().toString(), QString::fromStdString(window.document()->body(0).name));
-        QVERIFY(window.windowTitle().contains(file));
+        QVERIFY(window.windowTitle().contains(QFileInfo(file).fileName()));
     }
 
     void filterNarrowsRows() {

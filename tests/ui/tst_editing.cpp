@@ -20,6 +20,7 @@
 #include <QMessageBox>
 #include <QMouseEvent>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTreeView>
 
@@ -88,6 +89,7 @@ private slots:
     void init();
     void cleanup();
     void gizmoDragIsOneUndoStep();
+    void gizmoDragSurvivesSaveAndReopen();
     void rotateDragTurnsAboutTheSelectionCentre();
     void toolKeysAndButtons();
     void addPrimitive_data();
@@ -168,6 +170,38 @@ void TestEditing::gizmoDragIsOneUndoStep() {
             1e-5f);
     document()->undoStack()->redo();
     QVERIFY(document()->scene() == moved);
+}
+
+// Issue 5's chain in one go: drag the gizmo, save, open the file in a new window, and the body is where the drag put
+// it, bit for bit.
+void TestEditing::gizmoDragSurvivesSaveAndReopen() {
+    const rl::Scene original = document()->scene();
+    m_window->setSelectedBodies({1});
+    viewport()->setTool(rl::GizmoTool::Move);
+    const std::optional<QPointF> handle = viewport()->gizmoHandlePosition(rl::GizmoHandle::MoveZ);
+    QVERIFY(handle);
+    drag(viewport(), *handle, *handle + QPointF(-60, 40));
+    const rl::Scene moved = document()->scene();
+    QVERIFY(std::abs(moved.bodies[1].position.z - original.bodies[1].position.z) > 0.1);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("dragged.rlscene"));
+    QString error;
+    QVERIFY2(document()->save(path, &error), qPrintable(error));
+    QVERIFY(document()->undoStack()->isClean());
+
+    rl::MainWindow reopened;
+    reopened.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&reopened));
+    QVERIFY(reopened.openFile(path));
+    const rl::Scene loaded = reopened.document()->scene();
+    QCOMPARE(loaded.bodies.size(), moved.bodies.size());
+    for (size_t i = 0; i < moved.bodies.size(); ++i) {
+        QCOMPARE(loaded.bodies[i].name, moved.bodies[i].name);
+        QVERIFY(loaded.bodies[i].position == moved.bodies[i].position);
+        QVERIFY(loaded.bodies[i].orientation == moved.bodies[i].orientation);
+    }
+    QVERIFY(std::abs(reopened.viewport()->scene().instances[1].model[3].z -
+                     static_cast<float>(moved.bodies[1].position.z)) < 1e-5f);
 }
 
 void TestEditing::rotateDragTurnsAboutTheSelectionCentre() {

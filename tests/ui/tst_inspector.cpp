@@ -17,6 +17,7 @@
 #include <QLineEdit>
 #include <QSurfaceFormat>
 #include <QTest>
+#include <QTranslator>
 
 class TestInspector : public QObject {
     Q_OBJECT
@@ -381,6 +382,44 @@ private slots:
         // The list is the library's order: the presets first.
         QCOMPARE(material->itemText(0), QStringLiteral("Default"));
         QCOMPARE(material->count(), static_cast<int>(rl::materialPresets().size()));
+    }
+
+    // The computed warnings: mixed.obj's torus is concave; the warning reads in the user's language.
+    void warningsNameTheConcaveBody_data() {
+        QTest::addColumn<QString>("translation");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("English") << QString() << "concave: simulated as its convex hull";
+        QTest::newRow("German") << ":/i18n/rigidlab_de.qm"
+                                << "konkav: wird als seine konvexe Hülle simuliert";
+    }
+    void warningsNameTheConcaveBody() {
+        QFETCH(QString, translation);
+        QFETCH(QString, expected);
+        QTranslator translator;
+        if (!translation.isEmpty()) {
+            QVERIFY(translator.load(translation));
+            QCoreApplication::installTranslator(&translator);
+        }
+        {
+            rl::MainWindow window;
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/resources/scenes/mixed.obj")));
+            int torus = -1, cube = -1;
+            for (int i = 0; i < window.document()->bodyCount(); ++i) {
+                if (window.document()->body(i).name == "Torus")
+                    torus = i;
+                if (window.document()->body(i).name == "Cube")
+                    cube = i;
+            }
+            QVERIFY(torus >= 0 && cube >= 0);
+            auto* warnings = child<QLabel>(window, "InspectorWarnings");
+            window.setSelectedBodies({torus});
+            QTRY_COMPARE(warnings->text(), expected);
+            window.setSelectedBodies({cube});
+            QTRY_VERIFY(!warnings->text().contains(expected));
+        }
+        QCoreApplication::removeTranslator(&translator);
     }
 
     void screenshot() {

@@ -100,11 +100,13 @@ private slots:
         QTest::keyClick(value, Qt::Key_Return);
         QCOMPARE(*document->body(2).friction, 0.85);
         const int steps = document->undoStack()->count();
-        // Arrow steps merge into the previous friction edit.
+        // Enter finished that edit: arrow steps after it are a new step (and merge with each other).
         value->stepUp();
         value->stepUp();
         QCOMPARE(*document->body(2).friction, 0.95);
-        QCOMPARE(document->undoStack()->count(), steps);
+        QCOMPARE(document->undoStack()->count(), steps + 1);
+        document->undoStack()->undo();
+        QCOMPARE(*document->body(2).friction, 0.85);
         document->undoStack()->undo();
         QCOMPARE(*document->body(2).friction, woodFriction);
         document->undoStack()->undo();
@@ -382,6 +384,39 @@ private slots:
         // The list is the library's order: the presets first.
         QCOMPARE(material->itemText(0), QStringLiteral("Default"));
         QCOMPARE(material->count(), static_cast<int>(rl::materialPresets().size()));
+    }
+
+    // Two edits of one field are two undo steps when the first was finished (Enter, or the focus left the field);
+    // arrow steps within one edit merge. Undo then goes back one edit at a time.
+    void finishedEditsOfOneFieldAreSeparateSteps() {
+        rl::MainWindow window;
+        QVERIFY(openStack(window));
+        rl::SceneDocument* document = window.document();
+        window.setSelectedBodies({1});
+        auto* enabled = child<QCheckBox>(window, "InspectorFrictionEnabled");
+        QTest::mouseClick(enabled, Qt::LeftButton, {}, QPoint(6, enabled->height() / 2));
+        const int start = document->undoStack()->count();
+        auto* friction = child<QDoubleSpinBox>(window, "InspectorFriction");
+        QTRY_VERIFY(friction->isEnabled());
+        auto typeValue = [&](const QString& text) {
+            friction->setFocus();
+            friction->selectAll();
+            QTest::keyClicks(friction, text);
+            QTest::keyClick(friction, Qt::Key_Return);
+        };
+        typeValue("0.3");
+        QCOMPARE(*document->body(1).friction, 0.3);
+        QCOMPARE(document->undoStack()->count(), start + 1); // the keystrokes of one value are one step
+        typeValue("0.55");
+        QCOMPARE(*document->body(1).friction, 0.55);
+        QCOMPARE(document->undoStack()->count(), start + 2);
+        friction->stepUp();
+        friction->stepUp();
+        QCOMPARE(document->undoStack()->count(), start + 3);
+        document->undoStack()->undo();
+        QCOMPARE(*document->body(1).friction, 0.55);
+        document->undoStack()->undo();
+        QCOMPARE(*document->body(1).friction, 0.3);
     }
 
     // The computed warnings: mixed.obj's torus is concave; the warning reads in the user's language.

@@ -320,13 +320,18 @@ private slots:
         QCOMPARE(document->undoStack()->count(), 1);
         QCOMPARE(entry(window, "Concrete").friction, 1.0);
         QCOMPARE(spin->value(), 1.0);
-        // Spin-box arrow steps of the same field merge too; another field is a new step.
-        spin->stepUp();
-        QCOMPARE(document->undoStack()->count(), 1);
-        child<QSlider>(materials, "MaterialRestitutionSlider")->setValue(100);
+        // The release ended the drag: a spin-box step of the same field afterwards is a step of its own, and its
+        // arrow steps merge with each other; another field is a new step.
+        spin->stepDown();
+        spin->stepDown();
         QCOMPARE(document->undoStack()->count(), 2);
+        QCOMPARE(entry(window, "Concrete").friction, 0.9);
+        child<QSlider>(materials, "MaterialRestitutionSlider")->setValue(100);
+        QCOMPARE(document->undoStack()->count(), 3);
         QCOMPARE(entry(window, "Concrete").restitution, 0.5);
         document->undoStack()->undo();
+        document->undoStack()->undo();
+        QCOMPARE(entry(window, "Concrete").friction, 1.0); // back to where the drag left it
         document->undoStack()->undo();
         QCOMPARE(entry(window, "Concrete"), *findPreset("Concrete"));
         QCOMPARE(slider->value(), 140);

@@ -4,9 +4,11 @@
 #include "io/SceneImport.h"
 #include "io/SceneJson.h"
 
+#include <QAbstractSpinBox>
 #include <QDir>
 #include <QFileInfo>
 #include <QSaveFile>
+#include <QSlider>
 
 #include <cmath>
 
@@ -174,6 +176,13 @@ void SceneDocument::setWorldSettings(const WorldSettings& settings) {
 void SceneDocument::setMaterials(const std::vector<MaterialDef>& materials) {
     m_scene.materials = materials;
     emit materialsChanged();
+}
+
+void SceneDocument::endEditGestureOnFinish(QWidget* root) {
+    for (QAbstractSpinBox* box : root->findChildren<QAbstractSpinBox*>())
+        connect(box, &QAbstractSpinBox::editingFinished, this, &SceneDocument::endEditGesture);
+    for (QSlider* slider : root->findChildren<QSlider*>())
+        connect(slider, &QSlider::sliderReleased, this, &SceneDocument::endEditGesture);
 }
 
 } // namespace rl

@@ -206,6 +206,7 @@ InspectorWidget::InspectorWidget(SceneDocument* document, QWidget* parent) : QWi
     connect(m_document, &SceneDocument::materialsChanged, this, &InspectorWidget::refresh);
     connect(m_document, &SceneDocument::bodyInserted, this, &InspectorWidget::refresh);
     connect(m_document, &SceneDocument::bodyRemoved, this, &InspectorWidget::refresh);
+    m_document->endEditGestureOnFinish(this);
     refresh();
 }
 

@@ -245,6 +245,7 @@ MaterialsWidget::MaterialsWidget(SceneDocument* document, QWidget* parent)
     connect(m_pairs, &MaterialPairModel::updated, this, &MaterialsWidget::refreshPairs);
     connect(document, &SceneDocument::sceneReset, m_message, &MessageBar::clearMessage);
 
+    m_document->endEditGestureOnFinish(this);
     selectRow(0);
     refreshEditor();
     refreshPairs();

@@ -385,6 +385,7 @@ WorldSettingsWidget::WorldSettingsWidget(SceneDocument* document, QWidget* paren
     connect(document, &SceneDocument::bodyChanged, this, &WorldSettingsWidget::scheduleDecision);
     connect(document, &SceneDocument::bodyInserted, this, &WorldSettingsWidget::scheduleDecision);
     connect(document, &SceneDocument::bodyRemoved, this, &WorldSettingsWidget::scheduleDecision);
+    m_document->endEditGestureOnFinish(this);
     refresh();
     scheduleDecision();
 }

@@ -33,6 +33,7 @@ private:
     std::vector<BodyDef> m_before;
     std::vector<BodyDef> m_after;
     int m_mergeId;
+    int m_gesture; // the document's edit gesture at construction: merges stay within one
 };
 
 } // namespace rl

@@ -29,6 +29,7 @@ private:
     BodyDef m_before;
     BodyDef m_after;
     int m_mergeId;
+    int m_gesture; // the document's edit gesture at construction: merges stay within one
 };
 
 } // namespace rl

@@ -40,6 +40,7 @@ private:
     std::vector<MaterialDef> m_before;
     std::vector<MaterialDef> m_after;
     int m_mergeId;
+    int m_gesture; // the document's edit gesture at construction: merges stay within one
     QString m_mergeKey;
 };
 

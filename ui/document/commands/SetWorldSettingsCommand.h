@@ -37,6 +37,7 @@ private:
     WorldSettings m_before;
     WorldSettings m_after;
     int m_mergeId;
+    int m_gesture; // the document's edit gesture at construction: merges stay within one
 };
 
 } // namespace rl

@@ -11,6 +11,7 @@
 #include "simulation/SimulationController.h"
 #include "viewport/ScenePresenter.h"
 #include "viewport/Viewport.h"
+#include "widgets/StableLabel.h"
 
 #include <QAbstractSpinBox>
 #include <QAction>
@@ -86,8 +87,20 @@ MainWindow::MainWindow(QWidget* parent)
     // Fixed minimum widths, so that a changing read-out does not make its neighbours jump.
     m_selectionLabel->setMinimumWidth(fontMetrics().horizontalAdvance(tr("nothing selected")) + 8);
     m_frameTimeLabel->setMinimumWidth(fontMetrics().horizontalAdvance(tr("frame %1 ms").arg(999.9, 0, 'f', 1)) + 8);
-    connect(m_viewport, &Viewport::frameRendered, this,
-            [this](double ms) { m_frameTimeLabel->setText(tr("frame %1 ms").arg(ms, 0, 'f', 1)); });
+    // The read-out changes with every frame, and a label that changes after paintGL makes the whole window compose
+    // once more (a second full composition per frame under a software GL). So it shows the latest frame time at
+    // most four times a second: the first frame at once, later ones when the timer fires.
+    auto* frameTimeTimer = new QTimer(this);
+    frameTimeTimer->setSingleShot(true);
+    frameTimeTimer->setInterval(250);
+    connect(frameTimeTimer, &QTimer::timeout, this,
+            [this] { setStableText(m_frameTimeLabel, tr("frame %1 ms").arg(m_viewport->lastFrameMs(), 0, 'f', 1)); });
+    connect(m_viewport, &Viewport::frameRendered, this, [this, frameTimeTimer] {
+        if (m_frameTimeLabel->text().isEmpty())
+            setStableText(m_frameTimeLabel, tr("frame %1 ms").arg(m_viewport->lastFrameMs(), 0, 'f', 1));
+        else if (!frameTimeTimer->isActive())
+            frameTimeTimer->start();
+    });
     connect(m_viewport, &Viewport::selectionChanged, this, [this](const QList<int>& picked, bool extend) {
         QList<int> next = extend ? m_selection : QList<int>{};
         for (int body : picked) {

@@ -14,6 +14,7 @@
 #include "timeline/TimelineWidget.h"
 #include "viewport/ScenePresenter.h"
 #include "viewport/Viewport.h"
+#include "widgets/StableLabel.h"
 #include "world/Baker.h"
 
 #include <QAction>
@@ -280,7 +281,7 @@ void SimulationController::updateStatusLabel() {
         break;
     }
     }
-    m_statusLabel->setText(text);
+    setStableText(m_statusLabel, text);
 }
 
 void SimulationController::setDisplay(Display display) {

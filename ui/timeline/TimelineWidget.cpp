@@ -2,6 +2,7 @@
 
 #include "bake/Bake.h"
 #include "timeline/TimelineView.h"
+#include "widgets/StableLabel.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -230,7 +231,9 @@ void TimelineWidget::createToolBar(QWidget* bar) {
     m_frameSpin->setKeyboardTracking(false);
     m_frameSpin->setAccelerated(true);
     m_frameSpin->setToolTip(tr("Current frame"));
-    m_frameSpin->setMinimumWidth(m_frameSpin->fontMetrics().horizontalAdvance(QStringLiteral("0000000")) + 30);
+    // A fixed size: a new range or value then does not re-lay out the window (see StableLabel.h).
+    m_frameSpin->setFixedSize(m_frameSpin->fontMetrics().horizontalAdvance(QStringLiteral("0000000")) + 30,
+                              m_frameSpin->sizeHint().height());
     frameLabel->setBuddy(m_frameSpin);
     connect(m_frameSpin, &QSpinBox::valueChanged, this, &TimelineWidget::setCurrentFrame);
     row->addWidget(m_frameSpin);
@@ -357,7 +360,7 @@ void TimelineWidget::updateFrameReadout() {
         m_frameSpin->setValue(m_current);
         m_frameSpin->blockSignals(false);
     }
-    m_timeLabel->setText(tr("%1 s").arg(m_current / m_fps, 0, 'f', 3));
+    setStableText(m_timeLabel, tr("%1 s").arg(m_current / m_fps, 0, 'f', 3));
 }
 
 void TimelineWidget::setShowSeconds(bool seconds) {

@@ -1,5 +1,6 @@
 // The RigidLab editor: sets up the application and opens the scene named on the command line, if any.
 #include "MainWindow.h"
+#include "settings/Translation.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -30,7 +31,7 @@ int main(int argc, char* argv[]) {
     const QString language = settings.value("ui/language").toString();
     const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
     QTranslator translator;
-    if (translator.load(locale, "rigidlab", "_", ":/i18n"))
+    if (rl::loadEditorTranslation(translator, locale))
         QApplication::installTranslator(&translator);
     QTranslator qtTranslator;
     if (qtTranslator.load(locale, "qtbase", "_", QLibraryInfo::path(QLibraryInfo::TranslationsPath)))

@@ -21,6 +21,17 @@ constexpr int kMaxHorizonRepairs = 16;
 // Thickness, in tolerances, below which a point set is flat. Measured on random slabs 2 wide (tolerance 2.8e-10):
 // 2e-9 thick, a solid hull left points 5.7e-7 outside a face; 6e-9 thick, 2.6e-8; 2e-8 thick, 5e-9; 4e-8, 4e-10.
 constexpr Real kFlatFactor = 64.0;
+// Rounding of the input coordinates (m) that face merging allows for: half a unit in the sixth decimal, which is
+// what Blender's OBJ exporter writes, over the three coordinates of a point and the plane's own error (a rotated
+// box from Blender: 7.8e-7). Capped relative to the extent (faceMergeTolerance) so that millimetre-sized point sets
+// keep their own scale.
+constexpr Real kInputRounding = 2e-6;
+
+Real faceMergeRelative(const HullOptions& options) {
+    return std::isfinite(options.faceMergeTolerance) && options.faceMergeTolerance > 0.0
+               ? options.faceMergeTolerance
+               : HullOptions{}.faceMergeTolerance;
+}
 
 // Triangle of the working hull. adj[i] is the triangle across the directed edge v[i] -> v[(i + 1) % 3].
 struct Triangle {
@@ -109,14 +120,23 @@ public:
     void build(const std::array<uint32_t, 4>& simplex);
 
     // Groups coplanar triangles into polygons; returns loops of local point indices, counter-clockwise from outside.
-    std::vector<std::vector<uint32_t>> mergedFaces() const;
+    // mergeTolerance (>= the build tolerance) is how far from the seed triangle's plane a neighbour's vertices may lie.
+    std::vector<std::vector<uint32_t>> mergedFaces(Real mergeTolerance) const;
+    // The triangles of the hull, as local point indices, counter-clockwise from outside.
+    std::vector<std::array<uint32_t, 3>> triangles() const {
+        std::vector<std::array<uint32_t, 3>> out;
+        for (const Triangle& t : m_tris)
+            if (t.alive)
+                out.push_back({t.v[0], t.v[1], t.v[2]});
+        return out;
+    }
 
 private:
     Real distance(const Triangle& t, uint32_t p) const { return glm::dot(t.normal, m_pts[p]) - t.offset; }
     // Visibility flags are only meaningful for faces stamped in the current insertion.
     bool visibleNow(int32_t f) const { return m_stamp[f] == m_iteration && m_visible[f] != 0; }
     int32_t addTriangle(uint32_t a, uint32_t b, uint32_t c);
-    bool convexLoop(const std::vector<uint32_t>& loop) const;
+    bool convexLoop(const std::vector<uint32_t>& loop, Real tolerance) const;
     void assign(const std::vector<uint32_t>& candidates, const std::vector<int32_t>& faces,
                 const std::vector<int32_t>& fallback);
     bool addPoint(int32_t seedFace, uint32_t p);
@@ -417,7 +437,7 @@ bool QuickHull::addPoint(int32_t seedFace, uint32_t p) {
 
 // A merged group is only kept as one face if its outline is convex: on a surface that curves by less than the
 // tolerance, the triangles within the tolerance of one plane can cover a non-convex patch.
-bool QuickHull::convexLoop(const std::vector<uint32_t>& loop) const {
+bool QuickHull::convexLoop(const std::vector<uint32_t>& loop, Real tolerance) const {
     const Vec3 n = newellNormal(m_pts, loop);
     const size_t count = loop.size();
     // All vertices against all edges for ordinary faces; very large faces check each edge against its next vertex.
@@ -431,17 +451,17 @@ bool QuickHull::convexLoop(const std::vector<uint32_t>& loop) const {
             return false;
         if (count <= kFullCheckLimit) {
             for (uint32_t v : loop) {
-                if (glm::dot(inward, m_pts[v] - a) < -m_eps * len)
+                if (glm::dot(inward, m_pts[v] - a) < -tolerance * len)
                     return false;
             }
-        } else if (glm::dot(inward, m_pts[loop[(i + 2) % count]] - a) < -m_eps * len) {
+        } else if (glm::dot(inward, m_pts[loop[(i + 2) % count]] - a) < -tolerance * len) {
             return false;
         }
     }
     return true;
 }
 
-std::vector<std::vector<uint32_t>> QuickHull::mergedFaces() const {
+std::vector<std::vector<uint32_t>> QuickHull::mergedFaces(Real mergeTolerance) const {
     std::vector<int32_t> alive;
     for (size_t i = 0; i < m_tris.size(); ++i) {
         if (m_tris[i].alive)
@@ -476,7 +496,7 @@ std::vector<std::vector<uint32_t>> QuickHull::mergedFaces() const {
                     continue;
                 bool coplanar = true;
                 for (uint32_t v : m_tris[nb].v)
-                    coplanar = coplanar && std::abs(glm::dot(n, m_pts[v]) - d) <= m_eps;
+                    coplanar = coplanar && std::abs(glm::dot(n, m_pts[v]) - d) <= mergeTolerance;
                 if (coplanar) {
                     group[nb] = g;
                     members.push_back(nb);
@@ -510,7 +530,7 @@ std::vector<std::vector<uint32_t>> QuickHull::mergedFaces() const {
                     loop.push_back(at);
                     at = next[at];
                 }
-                ok = at == start && convexLoop(loop);
+                ok = at == start && convexLoop(loop, mergeTolerance);
             } else {
                 ok = false;
             }
@@ -701,7 +721,17 @@ ConvexHull computeConvexHull(std::span<const Vec3> points, const HullOptions& op
 
     QuickHull qh(local, eps);
     qh.build({i0, i1, i2, i3});
-    std::vector<std::vector<uint32_t>> loops = qh.mergedFaces();
+    // Faces merge with a looser tolerance than the hull is built with: the input is rounded. Blender writes OBJ
+    // coordinates with six decimals, so the faces of a rotated box are planar only to about 1e-6 m, and with the
+    // build tolerance alone every such face stayed two triangles: a box landing flat got a three-point manifold
+    // from one of them and its fourth corner went 3.7 cm into the floor (mixed.obj's Cube).
+    const Real mergeEps = std::max(eps, std::min(kInputRounding, faceMergeRelative(options) * extent));
+    hull.faceTolerance = mergeEps;
+    // Merged faces may bend by up to mergeEps; the triangles keep the volume independent of how a face is split.
+    for (const auto& t : qh.triangles())
+        for (uint32_t v : t)
+            hull.triangleCorners.push_back(points[source[v]]);
+    std::vector<std::vector<uint32_t>> loops = qh.mergedFaces(mergeEps);
 
     // A vertex shared by only two faces sits in the middle of a straight edge between them; it is not a corner.
     // It is removed from both faces at once (never from just one) so that the edges still pair up.

@@ -26,6 +26,11 @@ struct ConvexHull {
     // Absolute distance tolerance the hull was built with (m): every input point lies behind every face plane to
     // within a few of these, and the vertices of a face lie on its plane to within a few of these.
     Real tolerance = 0.0;
+    // Distance within which the vertices of a merged face lie of its plane (>= tolerance; see HullOptions).
+    Real faceTolerance = 0.0;
+    // Solid hulls: the hull's triangles before faces were merged, three corners each (input coordinates), for mass
+    // properties that do not depend on how a face bent within faceTolerance is split.
+    std::vector<Vec3> triangleCorners;
 
     bool isSolid() const { return dimension == HullDimension::Solid; }
 };
@@ -35,6 +40,10 @@ struct HullOptions {
     // face are coplanar. It never goes below the rounding of the coordinates (a small object far from the origin).
     // Non-positive or non-finite values mean the default.
     Real relativeTolerance = 1e-10;
+    // Triangles merge into one polygon face while their vertices lie within min(2e-6 m, this x the extent) of one
+    // plane (2e-6 m: the rounding of six-decimal coordinates, as Blender writes them) and the outline stays convex.
+    // Looser than relativeTolerance because the input is rounded; ConvexHull::faceTolerance reports the value used.
+    Real faceMergeTolerance = 1e-4;
 };
 
 // Never fails: degenerate input gives a lower dimension. Non-finite input points are ignored. A point set thinner

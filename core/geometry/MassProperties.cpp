@@ -123,6 +123,12 @@ MassProperties polyhedronMassProperties(std::span<const Vec3> vertices,
 
 MassProperties hullMassProperties(const ConvexHull& hull) {
     const size_t vertexCount = hull.vertices.size();
+    if (hull.dimension == HullDimension::Solid && !hull.triangleCorners.empty()) {
+        std::vector<std::array<uint32_t, 3>> triangles(hull.triangleCorners.size() / 3);
+        for (uint32_t t = 0; t < triangles.size(); ++t)
+            triangles[t] = {3 * t, 3 * t + 1, 3 * t + 2};
+        return polyhedronMassProperties(hull.triangleCorners, triangles);
+    }
     if (hull.dimension == HullDimension::Solid) {
         std::vector<std::array<uint32_t, 3>> triangles;
         for (const HullFace& face : hull.faces) {

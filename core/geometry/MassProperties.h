@@ -11,14 +11,15 @@
 namespace rl {
 
 struct MassProperties {
-    Real volume = 0.0;     // m^3; 0 for flat shapes
-    Real area = 0.0;       // surface area (flat: one side)
-    Vec3 centroid{0.0};    // centre of volume (flat: area centroid)
-    Mat3 inertia{0.0};     // per unit density, about the centroid, in the input axes (kg m^2 per kg/m^3)
+    Real volume = 0.0;  // m^3; 0 for flat shapes
+    Real area = 0.0;    // surface area (flat: one side)
+    Vec3 centroid{0.0}; // centre of volume (flat: area centroid)
+    Mat3 inertia{0.0};  // per unit density, about the centroid, in the input axes (kg m^2 per kg/m^3)
 };
 
 // Closed, consistently oriented (outward, counter-clockwise) triangle mesh.
-MassProperties polyhedronMassProperties(std::span<const Vec3> vertices, std::span<const std::array<uint32_t, 3>> triangles);
+MassProperties polyhedronMassProperties(std::span<const Vec3> vertices,
+                                        std::span<const std::array<uint32_t, 3>> triangles);
 
 // Mass properties of a hull. Solid hulls use their faces (fan-triangulated); flat ones report area data.
 MassProperties hullMassProperties(const ConvexHull& hull);

@@ -1,6 +1,7 @@
 // Hard cases in motion: friction on a slope against the closed form, restitution apex heights, a tumbling T-handle,
 // 1,000 boxes dropped on a floor, coincident boxes, a busy scene for 10 minutes, and projectiles against thin walls.
 #include "StabilityFixture.h"
+#include "io/SceneImport.h"
 #include "scene/SceneLibrary.h"
 
 #include <QTest>
@@ -105,6 +106,27 @@ private slots:
         });
         qInfo("T-handle about a stable axis for 60 s: largest tilt %.3g deg", glm::degrees(worst));
         QVERIFY(glm::degrees(worst) < 5.0);
+    }
+
+    // The sample scenes the README opens, made in Blender: nothing goes into the floor by more than resting contact
+    // depth. mixed.obj's Cube (rotated, six-decimal coordinates) once had triangle faces, landed on a three-point
+    // manifold and sank a corner 37 mm; its Torus 50 mm (measured); now 6.4 mm at most.
+    void sampleScenesStayOutOfTheFloor_data() {
+        QTest::addColumn<QString>("file");
+        QTest::newRow("mixed.obj") << "mixed.obj";
+        QTest::newRow("stack.obj") << "stack.obj";
+        // Not ramps.obj: there 0.2 m cubes meet each other edge first at 5 m/s, and a one-point speculative contact
+        // lets them turn into each other by up to 71 mm for two or three frames (measured; issue 4's note).
+    }
+    void sampleScenesStayOutOfTheFloor() {
+        QFETCH(QString, file);
+        Result<Scene> scene = importScene(std::string(RL_SOURCE_DIR "/resources/scenes/") + file.toStdString());
+        QVERIFY(scene);
+        World w = makeWorld(*scene);
+        const RunStats stats = run(w, 300);
+        qInfo("%s: deepest contact in 5 s %.2f mm", qPrintable(file), 1e3 * stats.maxPenetration);
+        QVERIFY(stats.allFinite);
+        QVERIFY(stats.maxPenetration < 0.01);
     }
 
     void thousandBoxesSettle() {

@@ -71,6 +71,29 @@ void fillExportDialog(QWidget* dialog, const QString& path, bool selected, int f
     dialog->findChild<QPushButton*>("ExportOk")->click();
 }
 
+// Exports the window's current bake through `action` (File > Export) and the dialog to `out`. Empty when the file
+// equals `expected` byte for byte, else what went wrong.
+QString exportAndCompare(QWidget& window, const QString& action, const QString& out, const QString& expected) {
+    onModal("ExportDialog", [out](QWidget* dialog) { fillExportDialog(dialog, out, false); });
+    QAction* trigger = window.findChild<QAction*>(action);
+    if (!trigger || !trigger->isEnabled())
+        return action + QStringLiteral(" is missing or disabled");
+    trigger->trigger(); // returns when the dialog was answered and the export finished
+    if (!QTest::qWaitFor([&] { return QFile::exists(out); }, 30000))
+        return out + QStringLiteral(" was not written");
+    const QByteArray ui = readAll(out);
+    const QByteArray cli = readAll(expected);
+    if (cli.isEmpty())
+        return expected + QStringLiteral(" is empty");
+    if (ui != cli)
+        return QStringLiteral("%1 (%2 bytes) differs from %3 (%4 bytes)")
+            .arg(out)
+            .arg(ui.size())
+            .arg(expected)
+            .arg(cli.size());
+    return {};
+}
+
 } // namespace
 
 class TestExport : public QObject {
@@ -124,18 +147,9 @@ private slots:
     void exportMatchesCli() {
         QFETCH(QString, action);
         QFETCH(QString, fileName);
-        const QString out = m_dir.filePath(fileName);
-        onModal("ExportDialog", [out](QWidget* dialog) { fillExportDialog(dialog, out, false); });
-        QAction* trigger = m_window->findChild<QAction*>(action);
-        QVERIFY(trigger);
-        QVERIFY(trigger->isEnabled());
-        trigger->trigger(); // returns when the dialog was answered and the export finished
-        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(out), 30000);
-        const QByteArray ui = readAll(out);
-        const QByteArray cli = readAll(fileName.endsWith(".csv") ? m_cliCsv : m_cliBake);
-        QVERIFY(!cli.isEmpty());
-        QCOMPARE(ui.size(), cli.size());
-        QVERIFY(ui == cli);
+        const QString problem = exportAndCompare(*m_window, action, m_dir.filePath(fileName),
+                                                 fileName.endsWith(".csv") ? m_cliCsv : m_cliBake);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
     }
 
     // The whole path a user takes: open the scene, bake 1 s with the editor's own bake (Simulation > Bake on its
@@ -155,18 +169,9 @@ private slots:
         QVERIFY(finished.wait(120000) || finished.count() == 1);
         QVERIFY(sim->currentBake());
         QCOMPARE(static_cast<int>(sim->currentBake()->frameCount()), 61);
-        const QString out = m_dir.filePath(QStringLiteral("editor_") + fileName);
-        onModal("ExportDialog", [out](QWidget* dialog) { fillExportDialog(dialog, out, false); });
-        QAction* trigger = window.findChild<QAction*>(action);
-        QVERIFY(trigger);
-        QVERIFY(trigger->isEnabled());
-        trigger->trigger();
-        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(out), 30000);
-        const QByteArray ui = readAll(out);
-        const QByteArray cli = readAll(fileName.endsWith(".csv") ? m_cliCsv : m_cliBake);
-        QVERIFY(!cli.isEmpty());
-        QCOMPARE(ui.size(), cli.size());
-        QVERIFY(ui == cli);
+        const QString problem = exportAndCompare(window, action, m_dir.filePath(QStringLiteral("editor_") + fileName),
+                                                 fileName.endsWith(".csv") ? m_cliCsv : m_cliBake);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
     }
 
     void selectionAndRange_data() {

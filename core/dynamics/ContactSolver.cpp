@@ -252,8 +252,6 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
             continue;
         SolverBody& a = bodies[c.bodyA];
         SolverBody& b = bodies[c.bodyB];
-        // Relative acceleration along the normal: gravity acts on the bodies that can move (not on anchors and
-        // sleepers, which are entries with no inverse mass).
         // The points of one manifold are coupled through the bodies' rotation: one pass, point after point, leaves
         // the first point's impulse lopsided and spins a box that landed flat (a 0.2 m cube dropped face down on
         // its four corners left at 15 rad/s). So the manifold's bouncing points are iterated together until the

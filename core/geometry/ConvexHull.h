@@ -23,8 +23,8 @@ struct ConvexHull {
     std::vector<Vec3> vertices;       // only the points that are hull vertices
     std::vector<HullFace> faces;      // Solid: closed polyhedron. Flat: two faces, the polygon and its reverse.
     std::vector<uint32_t> inputIndex; // for each hull vertex, the index of the input point it came from
-    // Absolute distance tolerance the hull was built with (m): every input point lies behind every face plane to
-    // within a few of these, and the vertices of a face lie on its plane to within a few of these.
+    // Absolute distance tolerance the hull was built with (m). Every input point lies behind every face plane, and
+    // the vertices of a face lie on its plane, to within a few of these or of faceTolerance, whichever is larger.
     Real tolerance = 0.0;
     // Distance within which the vertices of a merged face lie of its plane (>= tolerance; see HullOptions).
     Real faceTolerance = 0.0;

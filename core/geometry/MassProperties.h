@@ -21,7 +21,8 @@ struct MassProperties {
 MassProperties polyhedronMassProperties(std::span<const Vec3> vertices,
                                         std::span<const std::array<uint32_t, 3>> triangles);
 
-// Mass properties of a hull. Solid hulls use their faces (fan-triangulated); flat ones report area data.
+// Mass properties of a hull. Solid hulls use the triangles they were built from (ConvexHull::triangleCorners), or
+// their faces fan-triangulated when those are absent; flat ones report area data.
 MassProperties hullMassProperties(const ConvexHull& hull);
 
 // Inertia tensor moved from the centroid to another point (parallel axis), for a body of mass m.

@@ -7,8 +7,8 @@ namespace rl {
 namespace {
 
 // Every phrase the core can give, listed here for lupdate (the core cannot call tr()). Keep in step with
-// core/scene/BodyProperties.cpp (warnings) and core/world/Effects.cpp (reasons); tst_translations checks that
-// each phrase the core gives for the sample scenes has a German translation.
+// core/scene/BodyProperties.cpp (warnings) and core/world/Effects.cpp (reasons): tst_translations asks the core for
+// every reason (all combinations of scene facts and modes) and both warnings, and checks each has a German translation.
 [[maybe_unused]] constexpr const char* kPhrases[] = {
     QT_TRANSLATE_NOOP("rl::CoreText", "concave: simulated as its convex hull"),
     QT_TRANSLATE_NOOP("rl::CoreText", "smaller than 2 cm: may need more substeps"),

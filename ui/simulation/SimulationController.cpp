@@ -654,7 +654,7 @@ void SimulationController::onBakeProgress() {
     m_progressBar->setValue(static_cast<int>(std::lround(fraction * 1000.0)));
     m_progressBar->setToolTip(text);
     m_timeline->setProgress(fraction, text);
-    m_statusLabel->setText(tr("baking · %1").arg(text));
+    setStableText(m_statusLabel, tr("baking · %1").arg(text));
 }
 
 void SimulationController::onBakeFinished() {

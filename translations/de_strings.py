@@ -99,12 +99,13 @@ T["rl::AnalysisController"] = {
 
 T["rl::BakeDialog"] = {
     "Bake": "Backen",
-    "Records the simulation from the edit pose (frame 0) in the background. The timeline plays and scrubs the result.":
-        "Zeichnet die Simulation ab der Bearbeitungspose (Frame 0) im Hintergrund auf. "
-        "Die Zeitleiste spielt das Ergebnis ab und lässt darin navigieren.",
+    "Records the simulation in the background, starting from the edit pose at the first frame; before it the "
+    "bodies hold the edit pose. The timeline plays and scrubs the result.":
+        "Zeichnet die Simulation im Hintergrund auf, beginnend mit der Bearbeitungspose im ersten Frame; davor "
+        "behalten die Körper die Bearbeitungspose. Die Zeitleiste spielt das Ergebnis ab und lässt darin navigieren.",
     " s": " s",
     "&Duration:": "&Dauer:",
-    "0 to": "0 bis",
+    "to": "bis",
     "&Frames:": "&Frames:",
     "Frame rate:": "Bildrate:",
     "%1 Hz (the scene's world settings)": "%1 Hz (aus den Welteinstellungen der Szene)",
@@ -715,6 +716,8 @@ T["rl::SimulationController"] = {
     "baking · %1": "backt · %1",
     "Bake cancelled: kept frames 0 to %1.": "Backen abgebrochen: Frames 0 bis %1 behalten.",
     "Baked frames 0 to %1 in %2 s.": "Frames 0 bis %1 in %2 s gebacken.",
+    "Baked frames 0 to %1 in %2 s; the simulation starts at frame %3.":
+        "Frames 0 bis %1 in %2 s gebacken; die Simulation beginnt bei Frame %3.",
     "The scene was edited meanwhile, so the bake is stale.":
         "Die Szene wurde inzwischen bearbeitet, das Backergebnis ist daher veraltet.",
     "Open Bake": "Backergebnis öffnen",

@@ -254,20 +254,12 @@
         <translation>Backen</translation>
     </message>
     <message>
-        <source>Records the simulation from the edit pose (frame 0) in the background. The timeline plays and scrubs the result.</source>
-        <translation>Zeichnet die Simulation ab der Bearbeitungspose (Frame 0) im Hintergrund auf. Die Zeitleiste spielt das Ergebnis ab und lässt darin navigieren.</translation>
-    </message>
-    <message>
         <source> s</source>
         <translation> s</translation>
     </message>
     <message>
         <source>&amp;Duration:</source>
         <translation>&amp;Dauer:</translation>
-    </message>
-    <message>
-        <source>0 to</source>
-        <translation>0 bis</translation>
     </message>
     <message>
         <source>&amp;Frames:</source>
@@ -284,6 +276,14 @@
     <message>
         <source>&amp;Bake</source>
         <translation>&amp;Backen</translation>
+    </message>
+    <message>
+        <source>Records the simulation in the background, starting from the edit pose at the first frame; before it the bodies hold the edit pose. The timeline plays and scrubs the result.</source>
+        <translation>Zeichnet die Simulation im Hintergrund auf, beginnend mit der Bearbeitungspose im ersten Frame; davor behalten die Körper die Bearbeitungspose. Die Zeitleiste spielt das Ergebnis ab und lässt darin navigieren.</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>bis</translation>
     </message>
 </context>
 <context>
@@ -2205,6 +2205,10 @@ Restitution %5 = %6</translation>
             <numerusform>%1 geöffnet: Frames 0 bis %2 mit %3 Hz, %n Körper.</numerusform>
             <numerusform>%1 geöffnet: Frames 0 bis %2 mit %3 Hz, %n Körper.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Baked frames 0 to %1 in %2 s; the simulation starts at frame %3.</source>
+        <translation>Frames 0 bis %1 in %2 s gebacken; die Simulation beginnt bei Frame %3.</translation>
     </message>
 </context>
 <context>

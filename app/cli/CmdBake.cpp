@@ -44,6 +44,10 @@ int runBake(const QStringList& arguments) {
     parser.addOption({"csv", "Write CSV to <file>.", "file"});
     parser.addOption({"seconds", "Simulate <s> seconds (default 10).", "s"});
     parser.addOption({"frames", "Simulate <n> frames after frame 0.", "n"});
+    parser.addOption({"start-frame",
+                      "Start the simulation at frame <n> (default 0); frames 0..n hold the initial state, and "
+                      "--seconds/--frames count from there.",
+                      "n"});
     parser.addOption({"fps", "Frames (steps) per second, overriding the scene.", "f"});
     parser.addOption({"substeps", "Solver substeps per step, overriding the scene.", "k"});
     parser.addOption({"iterations", "Solver iterations per substep, overriding the scene.", "i"});
@@ -65,13 +69,21 @@ int runBake(const QStringList& arguments) {
 
     WorldOptions options;
     double fps = 0.0, seconds = 10.0;
-    int substeps = 0, iterations = 0, frames = 0, threads = 1;
+    int substeps = 0, iterations = 0, frames = 0, threads = 1, startFrame = 0;
     if (!parsePositive(parser, "fps", fps) || !parsePositive(parser, "seconds", seconds) ||
         !parsePositiveInt(parser, "substeps", substeps) || !parsePositiveInt(parser, "iterations", iterations) ||
         !parsePositiveInt(parser, "frames", frames) || !parsePositiveInt(parser, "threads", threads)) {
         printError(QStringLiteral("rigidlab-cli bake: --fps, --seconds, --frames, --substeps, --iterations and "
                                   "--threads take positive numbers"));
         return kExitUsage;
+    }
+    if (parser.isSet("start-frame")) {
+        bool ok = false;
+        startFrame = parser.value("start-frame").toInt(&ok);
+        if (!ok || startFrame < 0) {
+            printError(QStringLiteral("rigidlab-cli bake: --start-frame takes a frame number of 0 or more"));
+            return kExitUsage;
+        }
     }
     if (fps > 0.0)
         options.fps = fps;
@@ -114,7 +126,8 @@ int runBake(const QStringList& arguments) {
         return kExitFailure;
     }
     const size_t frameCount =
-        frames > 0 ? static_cast<size_t>(frames) : static_cast<size_t>(std::llround(seconds * world.fps()));
+        static_cast<size_t>(startFrame) +
+        (frames > 0 ? static_cast<size_t>(frames) : static_cast<size_t>(std::llround(seconds * world.fps())));
 
     Bake bake = startBake(world);
     if (!scene->sourceObjText.empty()) {
@@ -134,6 +147,7 @@ int runBake(const QStringList& arguments) {
     qint64 lastReport = -1000;
     BakeRequest request;
     request.frames = frameCount;
+    request.startFrame = static_cast<size_t>(startFrame);
     request.progress = [&](size_t done, size_t total) {
         const qint64 now = clock.elapsed();
         if (!quiet && (now - lastReport >= 500 || done == total)) {

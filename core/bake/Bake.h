@@ -50,6 +50,11 @@ public:
     double frameTime(size_t frame) const { return static_cast<double>(frame) / m_fps; }
 
     const std::vector<BakeBodyInfo>& bodies() const { return m_bodies; }
+    // The frame at which the simulation started (BakeRequest::startFrame): the frames before it hold the initial
+    // state. Kept in memory only; the file formats have no place for it.
+    size_t simulationStart() const { return m_simulationStart; }
+    void setSimulationStart(size_t frame) { m_simulationStart = frame; }
+
     const BakeBodyInfo& body(size_t index) const { return m_bodies[index]; }
     BakeBodyInfo& body(size_t index) { return m_bodies[index]; }
 
@@ -103,6 +108,7 @@ public:
 private:
     size_t index(size_t frame, size_t body) const { return frame * m_bodies.size() + body; }
 
+    size_t m_simulationStart = 0;
     double m_fps = 60.0;
     std::vector<BakeBodyInfo> m_bodies;
     size_t m_frameCount = 0;

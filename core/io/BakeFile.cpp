@@ -91,7 +91,8 @@ struct Header {
     double fps = kLegacyBakeFps;
     int64_t frames = -1;
     int64_t bodies = -1;
-    int columns = 0; // values per line including the id
+    int columns = 0;   // values per line including the id
+    int64_t start = 0; // the frame at which the simulation started (start=, written when above 0)
 };
 
 Result<Header> parseHeader(std::string_view line, const std::string& fileName) {
@@ -132,6 +133,11 @@ Result<Header> parseHeader(std::string_view line, const std::string& fileName) {
             if (!v || *v < 0 || *v > INT32_MAX)
                 return fail("bad " + std::string(key) + " " + quoted(value) + " in the header");
             (key == "frames" ? h.frames : h.bodies) = *v;
+        } else if (key == "start") {
+            const std::optional<int64_t> v = parseInt(value);
+            if (!v || *v < 0 || *v > INT32_MAX)
+                return fail("bad start " + quoted(value) + " in the header");
+            h.start = *v;
         } else if (key == "columns") {
             if (value == kColumns8)
                 h.columns = 8;
@@ -167,7 +173,11 @@ void appendLegacyNumber(std::string& out, float value) {
 void writeBake(const Bake& bake, std::ostream& out) {
     std::string text = std::string(kHeaderTag) + " " + std::to_string(kBakeFormatVersion) +
                        " fps=" + formatDouble(bake.fps()) + " frames=" + std::to_string(bake.frameCount()) +
-                       " bodies=" + std::to_string(bake.bodyCount()) + " columns=" + std::string(kColumns8) + "\n";
+                       " bodies=" + std::to_string(bake.bodyCount()) + " columns=" + std::string(kColumns8);
+    // Readers ignore keys they do not know, so start= costs older builds nothing; it is left out at 0.
+    if (bake.simulationStart() > 0)
+        text += " start=" + std::to_string(bake.simulationStart());
+    text += '\n';
     out << text;
     const std::string& obj = bake.sceneObjText();
     out << obj;
@@ -372,6 +382,8 @@ Result<Bake> readBake(std::string_view text, const std::string& fileName, BakeFi
             }
     }
     Bake bake(std::move(infos), header.fps);
+    if (header.start > 0 && header.start < header.frames)
+        bake.setSimulationStart(static_cast<size_t>(header.start));
     bake.setSceneObjText(std::string(objText));
     bake.setHasVelocities(false);
     bake.reserveFrames(frameCount);

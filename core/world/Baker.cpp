@@ -38,8 +38,11 @@ void recordFrame(const World& world, Bake& bake) {
 
 bool bakeRun(World& world, Bake& bake, const BakeRequest& request) {
     bake.reserveFrames(bake.frameCount() + request.frames);
+    if (bake.frameCount() == 1)
+        bake.setSimulationStart(request.startFrame);
     for (size_t f = 0; f < request.frames; ++f) {
-        world.step();
+        if (bake.frameCount() > request.startFrame)
+            world.step();
         {
             StageTimer t(world.mutableProfile(), Stage::StoreFrame);
             recordFrame(world, bake);

@@ -25,7 +25,7 @@ public:
 private slots:
     void mnemonicLabelsHaveBuddies_data() {
         QTest::addColumn<Factory>("make");
-        QTest::newRow("bake") << Factory([] { return std::make_unique<rl::BakeDialog>(60.0, 600); });
+        QTest::newRow("bake") << Factory([] { return std::make_unique<rl::BakeDialog>(60.0, 0, 600); });
         QTest::newRow("export csv") << Factory([] {
             return std::make_unique<rl::ExportDialog>(rl::ExportRequest::Format::Csv, 601, 9, 60.0, true, QList<int>{1},
                                                       QStringLiteral("/tmp/x.csv"));

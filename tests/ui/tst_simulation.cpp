@@ -3,17 +3,20 @@
 // edits make a bake stale, and the event loop keeps running while a bake works.
 #include "overlays/OverlayController.h"
 #include "scene/SceneLibrary.h"
+#include "simulation/BakeDialog.h"
 #include "timeline/TimelineWidget.h"
 #include "ui/GuiTestSetup.h"
 #include "ui/SimulationTestUtil.h"
 #include "world/World.h"
 
 #include <QAction>
+#include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QMenu>
 #include <QProgressBar>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -274,6 +277,58 @@ private slots:
         QCOMPARE(sim->display(), SimulationController::Display::Baked);
         QVERIFY(sameModels(window)); // frame 0
         QVERIFY(sim->bakeDrivesPlayback());
+    }
+
+    // Simulation > Bake… with a frame range that starts at frame 20: duration and range stay in step, the bake holds
+    // frames 0..80, the bodies hold the edit pose up to frame 20 and move after it, and Re-bake keeps the range.
+    void bakeAFrameRangeStartingLater() {
+        BakeDialog dialog(60.0, 0, 600);
+        auto* first = dialog.findChild<QSpinBox*>("BakeFirstFrame");
+        auto* last = dialog.findChild<QSpinBox*>("BakeLastFrame");
+        auto* seconds = dialog.findChild<QDoubleSpinBox*>("BakeSeconds");
+        QVERIFY(first && last && seconds);
+        QCOMPARE(seconds->value(), 10.0);
+        first->setValue(20);
+        QCOMPARE(last->value(), 600);      // the last frame stays, the duration shrinks
+        QCOMPARE(seconds->value(), 9.667); // 580 frames at 60 Hz, to the box's three decimals
+        seconds->setValue(1.0);
+        QCOMPARE(last->value(), 80);
+        first->setValue(100); // past the last frame: the last frame follows
+        QCOMPARE(last->value(), 101);
+        first->setValue(20);
+        last->setValue(80);
+        QCOMPARE(dialog.firstFrame(), 20);
+        QCOMPARE(dialog.lastFrame(), 80);
+
+        MainWindow window;
+        QVERIFY(showWindow(window));
+        openBusyScene(window); // boxes that start falling at once
+        ModalGuard guard;
+        SimulationController* sim = window.simulation();
+        QSignalSpy finished(sim, &SimulationController::bakeFinished);
+        QVERIFY(!sim->startBake(20, 20)); // an empty range does not start
+        QVERIFY(sim->startBake(dialog.lastFrame(), dialog.firstFrame()));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+        std::shared_ptr<const Bake> bake = sim->currentBake();
+        QVERIFY(bake);
+        QCOMPARE(bake->frameCount(), size_t(81));
+        QCOMPARE(bake->simulationStart(), size_t(20));
+        QVERIFY(sim->statusMessage().contains("starts at frame 20"));
+        for (int frame : {0, 10, 20}) {
+            sim->timeline()->setCurrentFrame(frame);
+            QVERIFY2(sameModels(window), qPrintable(QString("frame %1").arg(frame)));
+        }
+        sim->timeline()->setCurrentFrame(21);
+        QVERIFY(!sameModels(window));
+
+        QVERIFY(sim->startBake(80, 40)); // rebake() below must use this range
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 60000);
+        QCOMPARE(sim->currentBake()->simulationStart(), size_t(40));
+        sim->rebake();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 3, 60000);
+        QCOMPARE(sim->currentBake()->simulationStart(), size_t(40));
+        QCOMPARE(sim->currentBake()->frameCount(), size_t(81));
+        QVERIFY(guard.seen().isEmpty());
     }
 
     // Cancel keeps the frames done so far, and they are a valid bake on the timeline.

@@ -4,12 +4,13 @@
 
 namespace rl {
 
-BakeJob::BakeJob(World world, Bake bake, size_t frames, std::function<void()> finished)
-    : m_world(std::move(world)), m_bake(std::move(bake)), m_frames(frames), m_finishedCallback(std::move(finished)),
-      m_start(std::chrono::steady_clock::now()) {
+BakeJob::BakeJob(World world, Bake bake, size_t frames, size_t startFrame, std::function<void()> finished)
+    : m_world(std::move(world)), m_bake(std::move(bake)), m_frames(frames), m_startFrame(startFrame),
+      m_finishedCallback(std::move(finished)), m_start(std::chrono::steady_clock::now()) {
     m_thread = std::thread([this] {
         BakeRequest request;
         request.frames = m_frames;
+        request.startFrame = m_startFrame;
         request.diagnostics = true;
         request.progress = [this](size_t done, size_t) {
             m_done.store(done);

@@ -14,8 +14,9 @@ namespace rl {
 
 class BakeJob {
 public:
-    // `bake` already holds frame 0 (startBake). `finished` is called on the worker thread at the end.
-    BakeJob(World world, Bake bake, size_t frames, std::function<void()> finished);
+    // `bake` already holds frame 0 (startBake); the simulation starts at `startFrame` (BakeRequest::startFrame).
+    // `finished` is called on the worker thread at the end.
+    BakeJob(World world, Bake bake, size_t frames, size_t startFrame, std::function<void()> finished);
     ~BakeJob(); // cancels and joins
 
     void cancel() { m_cancel.store(true); }
@@ -35,6 +36,7 @@ private:
     World m_world;
     Bake m_bake;
     size_t m_frames = 0;
+    size_t m_startFrame = 0;
     std::function<void()> m_finishedCallback;
     std::chrono::steady_clock::time_point m_start;
     std::atomic<size_t> m_done{0};

@@ -585,20 +585,23 @@ void SimulationController::bakeWithDialog() {
         return;
     const double fps = m_window->document()->scene().world.fps;
     const int last = m_lastBakeFrames > 0 ? m_lastBakeFrames : static_cast<int>(std::lround(kDefaultBakeSeconds * fps));
-    BakeDialog dialog(fps, last, m_window);
+    BakeDialog dialog(fps, std::min(m_lastBakeStart, last - 1), last, m_window);
     if (dialog.exec() == QDialog::Accepted)
-        startBake(dialog.lastFrame());
+        startBake(dialog.lastFrame(), dialog.firstFrame());
 }
 
 void SimulationController::rebake() {
     if (m_job)
         return;
     const double fps = m_window->document()->scene().world.fps;
-    startBake(m_lastBakeFrames > 0 ? m_lastBakeFrames : static_cast<int>(std::lround(kDefaultBakeSeconds * fps)));
+    if (m_lastBakeFrames > 0)
+        startBake(m_lastBakeFrames, m_lastBakeStart);
+    else
+        startBake(static_cast<int>(std::lround(kDefaultBakeSeconds * fps)));
 }
 
-bool SimulationController::startBake(int lastFrame) {
-    if (m_job || lastFrame < 1)
+bool SimulationController::startBake(int lastFrame, int firstFrame) {
+    if (m_job || lastFrame < 1 || firstFrame < 0 || firstFrame >= lastFrame)
         return false;
     if (m_window->analysis() && !m_window->analysis()->confirmPreflight())
         return false;
@@ -625,10 +628,11 @@ bool SimulationController::startBake(int lastFrame) {
         bake.setSceneObjText(std::move(obj).value());
     }
     m_lastBakeFrames = lastFrame;
+    m_lastBakeStart = firstFrame;
     m_editedDuringBake = false;
-    m_job = std::make_unique<BakeJob>(std::move(world), std::move(bake), static_cast<size_t>(lastFrame), [this] {
-        QMetaObject::invokeMethod(this, &SimulationController::onBakeFinished, Qt::QueuedConnection);
-    });
+    m_job = std::make_unique<BakeJob>(
+        std::move(world), std::move(bake), static_cast<size_t>(lastFrame), static_cast<size_t>(firstFrame),
+        [this] { QMetaObject::invokeMethod(this, &SimulationController::onBakeFinished, Qt::QueuedConnection); });
     m_progressTimer->start();
     m_progressBar->setValue(0);
     m_timeline->setProgress(0.0, tr("starting"));
@@ -670,6 +674,11 @@ void SimulationController::onBakeFinished() {
     setBake(bake, m_editedDuringBake);
     if (cancelled)
         showStatus(tr("Bake cancelled: kept frames 0 to %1.").arg(frames - 1));
+    else if (bake->simulationStart() > 0)
+        showStatus(tr("Baked frames 0 to %1 in %2 s; the simulation starts at frame %3.")
+                       .arg(frames - 1)
+                       .arg(seconds, 0, 'f', 1)
+                       .arg(bake->simulationStart()));
     else
         showStatus(tr("Baked frames 0 to %1 in %2 s.").arg(frames - 1).arg(seconds, 0, 'f', 1));
     if (m_editedDuringBake)
@@ -779,6 +788,7 @@ bool SimulationController::openBake(const QString& path) {
     m_mapperSource = MapperSource::None;
     const auto shared = std::make_shared<const Bake>(std::move(bake));
     m_lastBakeFrames = static_cast<int>(shared->frameCount()) - 1;
+    m_lastBakeStart = static_cast<int>(shared->simulationStart());
     setBake(shared, false);
     m_window->viewport()->frameAll();
     QString message = tr("Opened %1: frames 0 to %2 at %3 Hz, %n bodies.", "", static_cast<int>(shared->bodyCount()))

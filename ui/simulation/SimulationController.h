@@ -60,7 +60,8 @@ public:
     double liveTime() const { return m_shownLive.time; }
 
     // Starts a background bake of frames 0..lastFrame after the pre-flight check; false when it did not start.
-    bool startBake(int lastFrame);
+    // The simulation starts at firstFrame (below lastFrame); the frames before it hold the edit pose.
+    bool startBake(int lastFrame, int firstFrame = 0);
     bool isBaking() const { return m_job != nullptr; }
     // Stops the bake in progress; the frames done so far become the bake.
     void cancelBake();
@@ -121,7 +122,8 @@ private:
 
     std::unique_ptr<BakeJob> m_job;
     bool m_editedDuringBake = false;
-    int m_lastBakeFrames = -1; // the last bake's length, for Re-bake and the dialog's default
+    int m_lastBakeFrames = -1; // the last bake's last frame, for Re-bake and the dialog's default
+    int m_lastBakeStart = 0;   // and the frame its simulation started at
     QTimer* m_progressTimer = nullptr;
 
     // Pose mapping for the state on screen; its reference centres come from the live world or bake frame 0.

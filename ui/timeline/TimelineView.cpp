@@ -632,7 +632,9 @@ void TimelineView::paintRuler(QPainter& p) {
     // Baked range: tinted, with a solid (or hatched when stale) bar along the bottom.
     const std::shared_ptr<const Bake> bake = m_timeline->bake();
     if (bake && bake->frameCount() > 0) {
-        const double x0 = std::clamp(xForFrame(0), plot.left(), plot.right());
+        // From the frame where the simulation started: before it the bodies only hold the edit pose.
+        const double start = static_cast<double>(std::min(bake->simulationStart(), bake->frameCount() - 1));
+        const double x0 = std::clamp(xForFrame(start), plot.left(), plot.right());
         const double x1 = std::clamp(xForFrame(static_cast<double>(bake->frameCount() - 1)), plot.left(), plot.right());
         const QRectF band(x0, 0, std::max(2.0, x1 - x0), kRulerHeight);
         const QRectF bar(x0, barTop, std::max(2.0, x1 - x0), kBakeBarHeight);

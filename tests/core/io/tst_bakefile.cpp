@@ -97,6 +97,19 @@ private slots:
         QCOMPARE(toText(*back), text);
     }
 
+    // The frame where the simulation started travels as start= in the header; 0 is left out.
+    void simulationStartRoundTrips() {
+        Bake bake = test::makeFixtureBake(61, 60.0);
+        bake.setSimulationStart(20);
+        const std::string text = toText(bake);
+        QVERIFY(text.rfind("# rigidlab-bake 2 fps=60 frames=61 bodies=3 columns=id,x,y,z,qw,qx,qy,qz start=20\n", 0) ==
+                0);
+        Result<Bake> back = readBake(text, "fixture.bake");
+        QVERIFY(back.ok());
+        QCOMPARE(back->simulationStart(), size_t(20));
+        QCOMPARE(toText(*back), text);
+    }
+
     void fileRoundTripIsAtomic() {
         QTemporaryDir dir;
         const std::string path = dir.filePath("run.bake").toStdString();
@@ -222,6 +235,8 @@ private slots:
         QTest::newRow("newer version") << std::string("# rigidlab-bake 3 fps=60 frames=1 bodies=1\n!\n0 0 0 0\n") << 1
                                        << "newer";
         QTest::newRow("bad fps") << std::string("# rigidlab-bake 2 fps=-1 frames=1 bodies=1\n!\n") << 1 << "bad fps";
+        QTest::newRow("bad start") << std::string("# rigidlab-bake 2 fps=60 frames=1 bodies=1 start=x\n!\n") << 1
+                                   << "bad start 'x'";
         QTest::newRow("header lacks counts") << std::string("# rigidlab-bake 2 fps=60\n!\n") << 1 << "frames=";
         QTest::newRow("id beyond header") << header + "0 0 0 0 1 0 0 0\n2 0 0 0 1 0 0 0\n" << 4 << "bad id '2'";
         QTest::newRow("header short line") << header + "0 0 0 0 1 0 0\n" << 3 << "short line";

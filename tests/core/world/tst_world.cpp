@@ -205,6 +205,35 @@ private slots:
         QVERIFY(bake.position(30, 1).y < 3.0f);
         QVERIFY(bake.hasDiagnostics());
     }
+
+    // A bake whose simulation starts at frame 10 holds the initial state up to frame 10, then runs exactly as a
+    // bake started at frame 0 (bit for bit, shifted by 10 frames).
+    void bakeStartingLaterHoldsTheInitialStateThenRunsTheSame() {
+        Scene s = floorScene();
+        s.bodies.push_back(box("Cube", Vec3(0.5), Vec3(0, 3, 0)));
+        s.bodies.back().velocity = Vec3(1, 0, 0);
+        World plainWorld = makeWorld(s), laterWorld = makeWorld(s);
+        Bake plain = startBake(plainWorld), later = startBake(laterWorld);
+        BakeRequest request;
+        request.frames = 30;
+        QVERIFY(bakeRun(plainWorld, plain, request));
+        request.frames = 40;
+        request.startFrame = 10;
+        QVERIFY(bakeRun(laterWorld, later, request));
+        QCOMPARE(later.frameCount(), size_t(41));
+        QCOMPARE(later.simulationStart(), size_t(10));
+        QCOMPARE(plain.simulationStart(), size_t(0));
+        for (size_t f = 0; f <= 10; ++f) {
+            QCOMPARE(later.position(f, 1), plain.position(0, 1));
+            QCOMPARE(later.rotation(f, 1), plain.rotation(0, 1));
+        }
+        for (size_t f = 0; f <= 30; ++f) {
+            QCOMPARE(later.position(f + 10, 1), plain.position(f, 1));
+            QCOMPARE(later.rotation(f + 10, 1), plain.rotation(f, 1));
+            QCOMPARE(later.linearVelocity(f + 10, 1), plain.linearVelocity(f, 1));
+        }
+        QVERIFY(later.position(11, 1) != later.position(10, 1));
+    }
 };
 
 QTEST_APPLESS_MAIN(TestWorld)

@@ -44,9 +44,10 @@ bool collide(const Shape& a, const Transform& xfA, const Shape& b, const Transfo
              Manifold& out, const CollideOptions& options = {});
 
 // The reduction on its own, for the tests: picks up to 4 of `count` points lying on a plane with unit normal
-// `normal`: the deepest, then greedily the largest area, then single swaps while the area grows. On 500 random
-// sets tst_manifold measured at least 0.889 of the best quadrilateral through the deepest point. Writes the chosen
-// indices, returns how many.
+// `normal`: the deepest, then the farthest touching point if any other touches while some are apart, then greedily
+// the largest area, then single swaps while the area grows. On 500 random sets of touching points tst_manifold
+// measured at least 0.889 of the best quadrilateral through the deepest point. Writes the chosen indices, returns
+// how many.
 int reduceContactPoints(const Vec3* points, const Real* separations, int count, const Vec3& normal, int chosen[4]);
 
 } // namespace rl

@@ -296,6 +296,24 @@ private slots:
         QVERIFY(worst < 1e-6);
     }
 
+    // A touching point is not dropped for points that are still apart: two touching corners 2 cm apart and six
+    // speculative points 3-16 mm away keep both touching corners (the old reduction kept the deepest and three
+    // wide speculative ones, and the cube rocked between the two corners).
+    void reductionKeepsTouchingPoints() {
+        const std::vector<Vec3> pts = {{0.0, 0.0, 0.0}, {0.02, 0.0, 0.0}, {-0.1, 0.0, -0.1}, {0.1, 0.0, -0.1},
+                                       {0.1, 0.0, 0.1}, {-0.1, 0.0, 0.1}, {0.0, 0.0, 0.12},  {0.12, 0.0, 0.0}};
+        const std::vector<Real> seps = {-5e-5, -2e-5, 0.016, 0.012, 0.003, 0.009, 0.014, 0.006};
+        int chosen[4];
+        const int k = reduceContactPoints(pts.data(), seps.data(), int(pts.size()), Vec3(0, 1, 0), chosen);
+        QCOMPARE(k, 4);
+        QCOMPARE(chosen[0], 0);
+        QVERIFY(std::find(chosen, chosen + 4, 1) != chosen + 4);
+        // The free slots go to the apart points that span the most area with the touching pair (0.011 m^2 at best).
+        const Vec3 four[4] = {pts[size_t(chosen[0])], pts[size_t(chosen[1])], pts[size_t(chosen[2])],
+                              pts[size_t(chosen[3])]};
+        QVERIFY(quadAreaY(four) > 0.01);
+    }
+
     // The reduction keeps the deepest point and nearly the largest area the candidates allow.
     void reductionKeepsArea() {
         std::mt19937_64 rng(5);

@@ -296,6 +296,35 @@ private slots:
         QVERIFY(worst < 1e-6);
     }
 
+    // Two cubes apart edge against edge (crossed at right angles, 1 cm apart, speculative margin 5 cm): the
+    // manifold keeps the edge axis as its normal but gets the points of the faces that face each other along it,
+    // each at least the edges' distance apart along the normal, so none pushes before the bodies touch.
+    void speculativeEdgeContactHasFacePoints() {
+        const Shape cube = mustShape(makeBox(Vec3(0.1)));
+        const Real corner = 0.1 * std::sqrt(2.0); // a 45-degree cube reaches this far from its centre
+        const Transform xa = Transform::fromQuat(Vec3(0.0), axisAngle(Vec3(0, 0, 1), kPi / 4));
+        const Transform xb =
+            Transform::fromQuat(Vec3(0.0, 2.0 * corner + 0.01, 0.0), axisAngle(Vec3(1, 0, 0), kPi / 4));
+        const SatResult sat = satPolyhedra(cube, xa, cube, xb);
+        QVERIFY(sat.feature == SatFeature::EdgePair);
+        QVERIFY(std::abs(sat.separation - 0.01) < 1e-9);
+        Manifold m;
+        QVERIFY(collide(cube, xa, cube, xb, 0.05, m));
+        QVERIFY(std::abs(glm::dot(m.normal, sat.normal) - 1.0) < 1e-9);
+        QVERIFY(m.pointCount >= 2);
+        Real closest = 1.0;
+        for (int k = 0; k < m.pointCount; ++k) {
+            const ContactPoint& p = m.points[k];
+            QVERIFY(p.separation >= 0.01 - 1e-9);
+            QVERIFY(p.separation <= 0.05);
+            closest = std::min(closest, p.separation);
+            // The witnesses lie on the two surfaces along the normal.
+            const Vec3 pa = xa.apply(p.localA), pb = xb.apply(p.localB);
+            QVERIFY(glm::length(glm::cross(pb - pa, m.normal)) < 1e-9);
+        }
+        QVERIFY(closest < 0.01 + 1e-6); // the edges' crossing is among the points
+    }
+
     // A touching point is not dropped for points that are still apart: two touching corners 2 cm apart and six
     // speculative points 3-16 mm away keep both touching corners (the old reduction kept the deepest and three
     // wide speculative ones, and the cube rocked between the two corners).

@@ -261,26 +261,7 @@ bool clipSpeculativeEdges(const Shape& a, const Transform& xfA, const Shape& b, 
         }
         std::swap(poly, next);
     }
-    // ... and by the band within spec: the separation along n is linear over B's face, so the part of the polygon
-    // within spec is one more half-plane. Its rim gives points at exactly spec where a corner region would
-    // otherwise have none (two edges crossed at right angles have only the crossing within spec).
     auto separation = [&](const Vec3& p) { return (glm::dot(nA, p) - offsetA) / alongA; };
-    if (!poly.empty()) {
-        next.clear();
-        for (size_t i = 0; i < poly.size(); ++i) {
-            const ClipVertex& p = poly[i];
-            const ClipVertex& q = poly[(i + 1) % poly.size()];
-            const Real dp = separation(p.p) - spec;
-            const Real dq = separation(q.p) - spec;
-            if (dp <= 0.0)
-                next.push_back(p);
-            if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) {
-                const Real t = dp / (dp - dq);
-                next.push_back({p.p + t * (q.p - p.p), featureHash(kTagEdge, 0xffffu, p.feature, q.feature)});
-            }
-        }
-        std::swap(poly, next);
-    }
 
     thread_local std::vector<Vec3> pts;
     thread_local std::vector<Real> seps;

@@ -49,10 +49,13 @@ struct WorldTuning {
     Real refineMassRatio = 250.0;
     Real refineSubsteps = 8.0;
     int maxSubstepRefinement = 4;
-    // Sweeps of the relax pass per substep (the solve pass runs `iterations` sweeps). The relax pass only removes
-    // the push-apart velocity of the soft solve, and one sweep does that, as in Box2D v3. Measured with 2 instead:
-    // every tests/stability case passes either way, and the solver does a quarter less work with 1.
-    int relaxIterations = 1;
+    // Sweeps of the relax pass per substep (the solve pass runs `iterations` sweeps). The relax pass removes the
+    // push-apart velocity of the soft solve. One sweep left the velocities at the end of a step unconverged in piles: a
+    // box resting on a few single-point contacts came out of each step turning at up to 0.3 rad/s one way, then the
+    // other, while its position hardly moved, and held its island of ~930 boxes awake. Of 12 piles of 1,000 random
+    // boxes (seeds 1-12), 2 were still moving at 2.1 cm/s after 10 s with one sweep and none with two (measured
+    // 2026-11-24); the second sweep makes four sweeps per substep instead of three.
+    int relaxIterations = 2;
     // CCD sweeps a body that moves more than this fraction of its smallest size in one step.
     Real ccdFraction = 0.5;
     // A pair's manifold is reused (its points refreshed from their local witnesses, as Bullet's persistent

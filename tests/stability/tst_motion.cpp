@@ -141,9 +141,8 @@ private slots:
     // ramps.obj's 0.2 m cubes meet each other edge first at 5-7 m/s. With one point at the edges' witnesses, a cube
     // set spinning at 22 rad/s by the hit turned a corner 71 mm into the other within the next step; speculative
     // edge contacts now clip the faces that face each other along the axis. The deepest contact of the first two
-    // seconds is then 47 mm (measured): an edge contact that already touched (-1.5 mm, one point) between two cubes
-    // spinning at 18 and 22 rad/s, whose geometry turns within one step; only re-colliding within the step would
-    // catch that.
+    // seconds is then 29 mm (measured): two cubes both spinning at 16 rad/s whose separating axis turns within one
+    // step; only re-colliding within the step would catch that.
     void rampsCubesMeetEdgeFirst() {
         Result<Scene> scene = importScene(std::string(RL_SOURCE_DIR "/resources/scenes/ramps.obj"));
         QVERIFY(scene);
@@ -151,7 +150,7 @@ private slots:
         const RunStats stats = run(w, 120);
         qInfo("ramps.obj: deepest contact in the first 2 s %.1f mm", 1e3 * stats.maxPenetration);
         QVERIFY(stats.allFinite);
-        QVERIFY(stats.maxPenetration < 0.05);
+        QVERIFY(stats.maxPenetration < 0.04);
     }
 
     // A state captured from ramps.obj (tests/data/stability/README.md): a cube on three corners among anchored
@@ -176,8 +175,15 @@ private slots:
         QVERIFY(stats.maxPenetration < 0.001);
     }
 
+    // Seeds 6 and 7 were still moving at 2.1 cm/s after 10 s with one relax sweep per substep (WorldTuning).
+    void thousandBoxesSettle_data() {
+        QTest::addColumn<unsigned>("seed");
+        for (unsigned seed : {1u, 6u, 7u})
+            QTest::addRow("seed %u", seed) << seed;
+    }
     void thousandBoxesSettle() {
-        World w = makeWorld(scenes::randomBoxes(1000));
+        QFETCH(unsigned, seed);
+        World w = makeWorld(scenes::randomBoxes(1000, seed));
         Real lowest = 1e9;
         const RunStats stats = run(w, 600, [&](int) {
             for (size_t i = 1; i < w.bodyCount(); ++i)

@@ -99,41 +99,61 @@ void flipManifold(Manifold& m) {
         std::swap(m.points[i].localA, m.points[i].localB);
 }
 
-// Clips the incident face of `inc` against the reference face `refFace` of `ref` and writes the points that lie
-// within `spec` of the reference plane. refIsA says which of the pair the reference face belongs to.
-bool clipFaces(const Shape& ref, const Transform& xfRef, uint32_t refFace, const Shape& inc, const Transform& xfInc,
-               bool refIsA, Real spec, Manifold& out) {
-    const ConvexPolyhedron& R = *ref.polyhedron;
-    const ConvexPolyhedron& I = *inc.polyhedron;
-    const PolyFace& rf = R.faces[refFace];
-    const Vec3 nR = xfRef.rotate(rf.normal);
-    const Vec3 refOrigin = xfRef.apply(R.vertices[R.faceVertices[rf.first]]);
-    const Real refOffset = glm::dot(nR, refOrigin);
+// Candidate contact points of a clip, before the reduction to four.
+struct Candidates {
+    std::vector<Vec3> points;
+    std::vector<Real> separations;
+    std::vector<uint32_t> ids;
+    void clear() {
+        points.clear();
+        separations.clear();
+        ids.clear();
+    }
+    void add(const Vec3& p, Real separation, uint32_t id) {
+        points.push_back(p);
+        separations.push_back(separation);
+        ids.push_back(id);
+    }
+    int size() const { return static_cast<int>(points.size()); }
+};
 
-    // Incident face: the one most anti-parallel to the reference normal.
-    const Vec3 nRinI = xfInc.rotateInverse(nR);
-    uint32_t incFace = 0;
-    Real most = std::numeric_limits<Real>::infinity();
-    for (uint32_t i = 0; i < I.faces.size(); ++i) {
-        const Real d = glm::dot(I.faces[i].normal, nRinI);
-        if (d < most) {
+// The face of `shape` whose normal points most along `direction` (world); the first of equals.
+uint32_t mostAlignedFace(const Shape& shape, const Transform& xf, const Vec3& direction, Real* alignment = nullptr) {
+    const ConvexPolyhedron& P = *shape.polyhedron;
+    const Vec3 local = xf.rotateInverse(direction);
+    uint32_t best = 0;
+    Real most = -std::numeric_limits<Real>::infinity();
+    for (uint32_t i = 0; i < P.faces.size(); ++i) {
+        const Real d = glm::dot(P.faces[i].normal, local);
+        if (d > most) {
             most = d;
-            incFace = i;
+            best = i;
         }
     }
+    if (alignment)
+        *alignment = most;
+    return best;
+}
 
-    thread_local std::vector<ClipVertex> poly, next;
+// Face `face` of `shape` as a world polygon whose vertices carry their index in the face loop.
+void facePolygon(const Shape& shape, const Transform& xf, const PolyFace& face, std::vector<ClipVertex>& poly) {
+    const ConvexPolyhedron& P = *shape.polyhedron;
     poly.clear();
-    const PolyFace& inf = I.faces[incFace];
-    for (uint32_t k = 0; k < inf.count; ++k)
-        poly.push_back({xfInc.apply(I.vertices[I.faceVertices[inf.first + k]]), k});
+    for (uint32_t k = 0; k < face.count; ++k)
+        poly.push_back({xf.apply(P.vertices[P.faceVertices[face.first + k]]), k});
+}
 
-    // Sutherland-Hodgman against the side planes of the reference face (edge x normal points outward for a
-    // counter-clockwise loop). Each pass at most adds one vertex, so the loop is bounded by the two face sizes.
-    for (uint32_t k = 0; k < rf.count && !poly.empty(); ++k) {
-        const Vec3 v0 = xfRef.apply(R.vertices[R.faceVertices[rf.first + k]]);
-        const Vec3 v1 = xfRef.apply(R.vertices[R.faceVertices[rf.first + (k + 1) % rf.count]]);
-        Vec3 side = glm::cross(v1 - v0, nR);
+// Sutherland-Hodgman: clips `poly` by the prism of `face` of `ref` swept along `direction`, i.e. by the planes
+// through the face's edges that contain `direction` (outward for a counter-clockwise loop while `direction` leans
+// along the face normal). Each pass adds at most one vertex, so the work is bounded by the two polygons' sizes.
+void clipByFacePrism(const Shape& ref, const Transform& xfRef, const PolyFace& face, const Vec3& direction,
+                     std::vector<ClipVertex>& poly) {
+    const ConvexPolyhedron& R = *ref.polyhedron;
+    thread_local std::vector<ClipVertex> next;
+    for (uint32_t k = 0; k < face.count && !poly.empty(); ++k) {
+        const Vec3 v0 = xfRef.apply(R.vertices[R.faceVertices[face.first + k]]);
+        const Vec3 v1 = xfRef.apply(R.vertices[R.faceVertices[face.first + (k + 1) % face.count]]);
+        Vec3 side = glm::cross(v1 - v0, direction);
         const Real len = glm::length(side);
         if (!(len > 0.0))
             continue;
@@ -154,46 +174,57 @@ bool clipFaces(const Shape& ref, const Transform& xfRef, uint32_t refFace, const
         }
         std::swap(poly, next);
     }
+}
 
-    thread_local std::vector<Vec3> pts;
-    thread_local std::vector<Real> seps;
-    thread_local std::vector<uint32_t> ids;
-    pts.clear();
-    seps.clear();
-    ids.clear();
+// Clips the incident face of `inc` against the reference face `refFace` of `ref` and writes the points that lie
+// within `spec` of the reference plane. refIsA says which of the pair the reference face belongs to.
+bool clipFaces(const Shape& ref, const Transform& xfRef, uint32_t refFace, const Shape& inc, const Transform& xfInc,
+               bool refIsA, Real spec, Manifold& out) {
+    const ConvexPolyhedron& R = *ref.polyhedron;
+    const ConvexPolyhedron& I = *inc.polyhedron;
+    const PolyFace& rf = R.faces[refFace];
+    const Vec3 nR = xfRef.rotate(rf.normal);
+    const Vec3 refOrigin = xfRef.apply(R.vertices[R.faceVertices[rf.first]]);
+    const Real refOffset = glm::dot(nR, refOrigin);
+
+    // Incident face: the one most anti-parallel to the reference normal; clipped by the reference face's side planes.
+    const uint32_t incFace = mostAlignedFace(inc, xfInc, -nR);
+    thread_local std::vector<ClipVertex> poly;
+    facePolygon(inc, xfInc, I.faces[incFace], poly);
+    clipByFacePrism(ref, xfRef, rf, nR, poly);
+
+    thread_local Candidates candidates;
+    candidates.clear();
     for (const ClipVertex& v : poly) {
         const Real s = glm::dot(nR, v.p) - refOffset;
-        if (s <= spec) {
-            pts.push_back(v.p);
-            seps.push_back(s);
-            ids.push_back(featureHash(refIsA ? kTagFace : kTagFace + 16, refFace, incFace, v.feature));
-        }
+        if (s <= spec)
+            candidates.add(v.p, s, featureHash(refIsA ? kTagFace : kTagFace + 16, refFace, incFace, v.feature));
     }
-    if (pts.empty()) {
+    if (candidates.size() == 0) {
         // Rounding can clip away a contact the SAT saw (a vertex grazing the face's rim): keep the deepest
         // incident vertex so that the pair still gets a point.
-        const Vec3 p = xfInc.apply(I.support(-nRinI));
+        const uint32_t deepest = I.supportIndex(xfInc.rotateInverse(-nR));
+        const Vec3 p = xfInc.apply(I.vertices[deepest]);
         const Real s = glm::dot(nR, p) - refOffset;
         if (s > spec)
             return false;
-        pts.push_back(p);
-        seps.push_back(s);
-        ids.push_back(featureHash(kTagSingle, refFace, I.supportIndex(-nRinI), refIsA));
+        candidates.add(p, s, featureHash(kTagSingle, refFace, deepest, refIsA));
     }
     int chosen[4];
-    const int n = reduceContactPoints(pts.data(), seps.data(), int(pts.size()), nR, chosen);
+    const int n =
+        reduceContactPoints(candidates.points.data(), candidates.separations.data(), candidates.size(), nR, chosen);
     const Transform& xfA = refIsA ? xfRef : xfInc;
     const Transform& xfB = refIsA ? xfInc : xfRef;
     out.normal = refIsA ? nR : -nR;
     out.pointCount = n;
     for (int i = 0; i < n; ++i) {
-        const Vec3 p = pts[size_t(chosen[i])];
-        const Real s = seps[size_t(chosen[i])];
+        const Vec3 p = candidates.points[size_t(chosen[i])];
+        const Real s = candidates.separations[size_t(chosen[i])];
         const Vec3 onRef = p - s * nR;
         if (refIsA)
-            setPoint(out.points[i], onRef, p, s, ids[size_t(chosen[i])], xfA, xfB);
+            setPoint(out.points[i], onRef, p, s, candidates.ids[size_t(chosen[i])], xfA, xfB);
         else
-            setPoint(out.points[i], p, onRef, s, ids[size_t(chosen[i])], xfA, xfB);
+            setPoint(out.points[i], p, onRef, s, candidates.ids[size_t(chosen[i])], xfA, xfB);
     }
     return n > 0;
 }
@@ -209,20 +240,8 @@ bool clipSpeculativeEdges(const Shape& a, const Transform& xfA, const Shape& b, 
                           Real spec, Manifold& out) {
     const ConvexPolyhedron& A = *a.polyhedron;
     const ConvexPolyhedron& B = *b.polyhedron;
-    auto extremeFace = [](const ConvexPolyhedron& P, const Vec3& localDir) {
-        uint32_t best = 0;
-        Real most = -std::numeric_limits<Real>::infinity();
-        for (uint32_t i = 0; i < P.faces.size(); ++i) {
-            const Real d = glm::dot(P.faces[i].normal, localDir);
-            if (d > most) {
-                most = d;
-                best = i;
-            }
-        }
-        return best;
-    };
-    const uint32_t fa = extremeFace(A, xfA.rotateInverse(n));
-    const uint32_t fb = extremeFace(B, xfB.rotateInverse(-n));
+    const uint32_t fa = mostAlignedFace(a, xfA, n);
+    const uint32_t fb = mostAlignedFace(b, xfB, -n);
     const PolyFace& faceA = A.faces[fa];
     const PolyFace& faceB = B.faces[fb];
     const Vec3 nA = xfA.rotate(faceA.normal);
@@ -231,62 +250,30 @@ bool clipSpeculativeEdges(const Shape& a, const Transform& xfA, const Shape& b, 
         return false;
     const Real offsetA = glm::dot(nA, xfA.apply(A.vertices[A.faceVertices[faceA.first]]));
 
-    thread_local std::vector<ClipVertex> poly, next;
-    poly.clear();
-    for (uint32_t k = 0; k < faceB.count; ++k)
-        poly.push_back({xfB.apply(B.vertices[B.faceVertices[faceB.first + k]]), k});
-    // B's face clipped by the prism of A's face swept along n: side planes through A's edges, parallel to n
-    // (outward for A's counter-clockwise loop, since n leans along A's normal).
-    for (uint32_t k = 0; k < faceA.count && !poly.empty(); ++k) {
-        const Vec3 v0 = xfA.apply(A.vertices[A.faceVertices[faceA.first + k]]);
-        const Vec3 v1 = xfA.apply(A.vertices[A.faceVertices[faceA.first + (k + 1) % faceA.count]]);
-        Vec3 side = glm::cross(v1 - v0, n);
-        const Real len = glm::length(side);
-        if (!(len > 0.0))
-            continue;
-        side /= len;
-        const Real off = glm::dot(side, v0);
-        next.clear();
-        for (size_t i = 0; i < poly.size(); ++i) {
-            const ClipVertex& p = poly[i];
-            const ClipVertex& q = poly[(i + 1) % poly.size()];
-            const Real dp = glm::dot(side, p.p) - off;
-            const Real dq = glm::dot(side, q.p) - off;
-            if (dp <= 0.0)
-                next.push_back(p);
-            if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) {
-                const Real t = dp / (dp - dq);
-                next.push_back({p.p + t * (q.p - p.p), featureHash(kTagEdge, k, p.feature, q.feature)});
-            }
-        }
-        std::swap(poly, next);
-    }
+    // B's face clipped by the prism of A's face swept along n.
+    thread_local std::vector<ClipVertex> poly;
+    facePolygon(b, xfB, faceB, poly);
+    clipByFacePrism(a, xfA, faceA, n, poly);
     auto separation = [&](const Vec3& p) { return (glm::dot(nA, p) - offsetA) / alongA; };
 
-    thread_local std::vector<Vec3> pts;
-    thread_local std::vector<Real> seps;
-    thread_local std::vector<uint32_t> ids;
-    pts.clear();
-    seps.clear();
-    ids.clear();
+    thread_local Candidates candidates;
+    candidates.clear();
     for (const ClipVertex& v : poly) {
         const Real s = separation(v.p); // from A's face plane to the point, along n
-        if (s <= spec) {
-            pts.push_back(v.p);
-            seps.push_back(s);
-            ids.push_back(featureHash(kTagEdge + 48, fa, fb, v.feature));
-        }
+        if (s <= spec)
+            candidates.add(v.p, s, featureHash(kTagEdge + 48, fa, fb, v.feature));
     }
-    if (pts.empty())
+    if (candidates.size() == 0)
         return false;
     int chosen[4];
-    const int count = reduceContactPoints(pts.data(), seps.data(), int(pts.size()), n, chosen);
+    const int count =
+        reduceContactPoints(candidates.points.data(), candidates.separations.data(), candidates.size(), n, chosen);
     out.normal = n;
     out.pointCount = count;
     for (int i = 0; i < count; ++i) {
-        const Vec3 pb = pts[size_t(chosen[i])];
-        const Real s = seps[size_t(chosen[i])];
-        setPoint(out.points[i], pb - s * n, pb, s, ids[size_t(chosen[i])], xfA, xfB);
+        const Vec3 pb = candidates.points[size_t(chosen[i])];
+        const Real s = candidates.separations[size_t(chosen[i])];
+        setPoint(out.points[i], pb - s * n, pb, s, candidates.ids[size_t(chosen[i])], xfA, xfB);
     }
     return true;
 }
@@ -294,22 +281,9 @@ bool clipSpeculativeEdges(const Shape& a, const Transform& xfA, const Shape& b, 
 // Reference face on whichever shape has a face best aligned with the normal (A wins near ties, for stability).
 bool clipAlongNormal(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, const Vec3& n,
                      Real spec, Manifold& out, Real& bestAlignment) {
-    auto bestFace = [](const Shape& s, const Transform& xf, const Vec3& dir, Real& align) {
-        const Vec3 local = xf.rotateInverse(dir);
-        uint32_t best = 0;
-        align = -2.0;
-        for (uint32_t i = 0; i < s.polyhedron->faces.size(); ++i) {
-            const Real d = glm::dot(s.polyhedron->faces[i].normal, local);
-            if (d > align) {
-                align = d;
-                best = i;
-            }
-        }
-        return best;
-    };
     Real alignA, alignB;
-    const uint32_t fa = bestFace(a, xfA, n, alignA);
-    const uint32_t fb = bestFace(b, xfB, -n, alignB);
+    const uint32_t fa = mostAlignedFace(a, xfA, n, &alignA);
+    const uint32_t fb = mostAlignedFace(b, xfB, -n, &alignB);
     // A keeps the reference face when both are aligned (face against face), for frame-to-frame stability.
     const bool useA = alignA >= alignB || alignA > 1.0 - 1e-9;
     bestAlignment = useA ? alignA : alignB;

@@ -51,7 +51,7 @@ public:
 
     const std::vector<BakeBodyInfo>& bodies() const { return m_bodies; }
     // The frame at which the simulation started (BakeRequest::startFrame): the frames before it hold the initial
-    // state. Kept in memory only; the file formats have no place for it.
+    // state. Our .bake carries it as start= in the header; CSV and the original project's format do not.
     size_t simulationStart() const { return m_simulationStart; }
     void setSimulationStart(size_t frame) { m_simulationStart = frame; }
 

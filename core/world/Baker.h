@@ -13,7 +13,7 @@ struct BakeRequest {
     size_t frames = 600; // frames after frame 0; the bake holds frames + 1
     // The simulation starts at this frame, as Blender's rigid-body cache starts at its start frame: frames
     // 1 .. startFrame repeat the initial state (the world is not stepped), and the run covers the frames after it.
-    // Must be below `frames`.
+    // At or beyond `frames`, every frame holds the initial state.
     size_t startFrame = 0;
     bool diagnostics = true; // record the per-frame diagnostic tracks
     // Called after each frame with (frames done, frames requested); returning false cancels and keeps what is done.

@@ -295,6 +295,10 @@ private slots:
         QCOMPARE(last->value(), 80);
         first->setValue(100); // past the last frame: the last frame follows
         QCOMPARE(last->value(), 101);
+        first->setValue(864000 - 60); // an hour at 240 Hz is the longest bake: the duration shows what fits
+        seconds->setValue(10.0);
+        QCOMPARE(last->value(), 864000);
+        QCOMPARE(seconds->value(), 1.0);
         first->setValue(20);
         last->setValue(80);
         QCOMPARE(dialog.firstFrame(), 20);

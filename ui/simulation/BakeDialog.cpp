@@ -63,7 +63,10 @@ BakeDialog::BakeDialog(double fps, int firstFrame, int lastFrame, QWidget* paren
         if (m_syncing)
             return;
         m_syncing = true;
-        m_lastFrame->setValue(m_firstFrame->value() + std::max(1, static_cast<int>(std::lround(seconds * m_fps))));
+        const int wanted = m_firstFrame->value() + std::max(1, static_cast<int>(std::lround(seconds * m_fps)));
+        m_lastFrame->setValue(wanted);
+        if (m_lastFrame->value() != wanted) // past the longest bake: the duration shows what will be baked
+            m_seconds->setValue((m_lastFrame->value() - m_firstFrame->value()) / m_fps);
         m_syncing = false;
     });
     connect(m_lastFrame, &QSpinBox::valueChanged, this, [this](int frame) {

@@ -595,7 +595,7 @@ void SimulationController::rebake() {
         return;
     const double fps = m_window->document()->scene().world.fps;
     if (m_lastBakeFrames > 0)
-        startBake(m_lastBakeFrames, m_lastBakeStart);
+        startBake(m_lastBakeFrames, std::min(m_lastBakeStart, m_lastBakeFrames - 1));
     else
         startBake(static_cast<int>(std::lround(kDefaultBakeSeconds * fps)));
 }

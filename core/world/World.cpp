@@ -174,6 +174,8 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
         w.m_proxies[i] = key.value();
     }
     w.m_sleepTime.assign(n, 0.0);
+    w.m_sleepAnchorPosition.assign(w.m_state.position.begin(), w.m_state.position.end());
+    w.m_sleepAnchorOrientation.assign(w.m_state.orientation.begin(), w.m_state.orientation.end());
     w.m_island.resize(n);
     std::iota(w.m_island.begin(), w.m_island.end(), 0u);
     return w;
@@ -398,12 +400,18 @@ void World::narrowphase() {
     m_profile.count(Counter::ContactPoints, points);
 }
 
+void World::restartSleepClock(uint32_t i) {
+    m_sleepTime[i] = 0.0;
+    m_sleepAnchorPosition[i] = m_state.position[i];
+    m_sleepAnchorOrientation[i] = m_state.orientation[i];
+}
+
 void World::wakeIsland(uint32_t body) {
     const uint32_t root = m_island[body];
     for (uint32_t i = 0; i < m_state.size(); ++i) {
         if (m_island[i] == root && !m_state.isStatic(i)) {
             m_state.flags[i] |= kBodyAwake;
-            m_sleepTime[i] = 0.0;
+            restartSleepClock(i);
         }
     }
 }
@@ -412,7 +420,7 @@ void World::wakeAll() {
     for (uint32_t i = 0; i < m_state.size(); ++i) {
         if (!m_state.isStatic(i)) {
             m_state.flags[i] |= kBodyAwake;
-            m_sleepTime[i] = 0.0;
+            restartSleepClock(i);
         }
     }
 }
@@ -752,11 +760,17 @@ void World::updateSleep() {
         if (m_state.isStatic(i))
             continue;
         if (m_state.isAwake(i)) {
-            // The fastest any point of the body moves, bounded by |v| + radius |w| (Box2D v3's sleep measure).
-            const Real speed =
-                glm::length(m_state.linearVelocity[i]) + m_radius[i] * glm::length(m_state.angularVelocity[i]);
-            const bool slow = speed < m_tuning.sleepSpeed;
-            m_sleepTime[i] = slow ? m_sleepTime[i] + dt : 0.0;
+            // How far any point of the body has got from where it was when its sleep clock started, bounded by
+            // the centre's displacement plus radius times the rotation angle (Jolt's sleep test, with one sphere
+            // for all the body's points). The clock runs while that stays within the distance a body moving at
+            // sleepSpeed covers in timeToSleep, and restarts from the current pose once it does not.
+            const Quat turn = m_state.orientation[i] * glm::conjugate(m_sleepAnchorOrientation[i]);
+            const Real angle = 2.0 * std::atan2(glm::length(Vec3(turn.x, turn.y, turn.z)), std::abs(turn.w));
+            const Real moved = glm::length(m_state.position[i] - m_sleepAnchorPosition[i]) + m_radius[i] * angle;
+            if (moved < m_tuning.sleepSpeed * m_tuning.timeToSleep)
+                m_sleepTime[i] += dt;
+            else
+                restartSleepClock(i);
         }
         islandMin[m_island[i]] = std::min(islandMin[m_island[i]], m_state.isAwake(i) ? m_sleepTime[i] : 1e30);
     }

@@ -269,11 +269,11 @@ private slots:
               boxLow, ballLow, b.csv.at(b.csv.last(), box)[X]);
         // The ball rides up over the box and, for a few frames, rests its 1,000 kg on 1 kg: the soft floor contact
         // under the box then carries the mass-ratio load while the box slides at 7 m/s. Issue 4's 1 cm (the resting
-        // 1:1000 pair's threshold) is NOT met here: the box sinks 2.8 cm for a few frames (measured 2026-11-24 with
-        // two relax sweeps per substep; 2.2 cm with one, which left piles of boxes rocking for good). Whatever
-        // converges the soft solution better sinks it deeper (4 iterations: 4.1 cm); more substeps help unevenly
-        // (32: 0.0, 64: 0.4, 128: 0.02 cm with one relax sweep). This guards that figure until the solver handles it.
-        QVERIFY(boxLow > 0.1 - 0.03);
+        // 1:1000 pair's threshold) is NOT met here: the box sinks 2.2 cm for a few frames (measured 2026-11-24 with
+        // one relax sweep per substep; 2.8 cm with two). Whatever converges the soft solution better sinks it deeper
+        // (4 iterations: 4.1 cm); more substeps help unevenly (32: 0.0, 64: 0.4, 128: 0.02 cm with one relax sweep).
+        // This guards that figure until the solver handles it.
+        QVERIFY(boxLow > 0.1 - 0.025);
         QVERIFY(ballLow > 0.5 - 0.01);
         QVERIFY(b.csv.at(b.csv.last(), box)[X] > 3.2); // it was hit
     }

@@ -175,10 +175,12 @@ private slots:
         QVERIFY(stats.maxPenetration < 0.001);
     }
 
-    // Seeds 6 and 7 were still moving at 2.1 cm/s after 10 s with one relax sweep per substep (WorldTuning).
+    // Seeds 9, 10, 13 and 14 were still moving at 3.0-8.8 cm/s after 10 s while the sleep test went by each body's
+    // speed at one instant: one box in each pile jittered in place and held the pile's island awake. Seeds 6 and 7
+    // did the same with one relax sweep per substep before that (WorldTuning).
     void thousandBoxesSettle_data() {
         QTest::addColumn<unsigned>("seed");
-        for (unsigned seed : {1u, 6u, 7u})
+        for (unsigned seed : {1u, 6u, 9u, 10u, 13u, 14u})
             QTest::addRow("seed %u", seed) << seed;
     }
     void thousandBoxesSettle() {

@@ -6,9 +6,12 @@
 
 #include <QTest>
 
+#include <cmath>
 #include <cstring>
 
 using namespace rl;
+
+Q_DECLARE_METATYPE(rl::Vec3)
 
 namespace {
 
@@ -140,6 +143,47 @@ private slots:
             w.step();
         QCOMPARE(w.profile().counter(Counter::IntegratedBodies), uint64_t(0));
         QCOMPARE(w.profile().counter(Counter::AwakeBodies), uint64_t(0));
+    }
+
+    // The sleep test goes by how far a body gets in timeToSleep (0.5 s), not by its speed at one instant: a box
+    // sliding or turning on a frictionless floor with its fastest point at 4 cm/s covers 2 cm in 0.5 s and sleeps;
+    // at 6 cm/s it covers 3 cm, beyond the 2.5 cm of sleepSpeed x timeToSleep, and stays awake.
+    void sleepGoesByTheDistanceCoveredInTheWindow_data() {
+        QTest::addColumn<Vec3>("velocity");
+        QTest::addColumn<Vec3>("spin");
+        QTest::addColumn<bool>("sleeps");
+        const Real corner = std::sqrt(3.0) * 0.5; // the cube's radius: centre to corner
+        QTest::newRow("slides at 4 cm/s") << Vec3(0.04, 0.0, 0.0) << Vec3(0.0) << true;
+        QTest::newRow("slides at 6 cm/s") << Vec3(0.06, 0.0, 0.0) << Vec3(0.0) << false;
+        QTest::newRow("corners turn at 4 cm/s") << Vec3(0.0) << Vec3(0.0, 0.04 / corner, 0.0) << true;
+        QTest::newRow("corners turn at 6 cm/s") << Vec3(0.0) << Vec3(0.0, 0.06 / corner, 0.0) << false;
+    }
+    void sleepGoesByTheDistanceCoveredInTheWindow() {
+        QFETCH(Vec3, velocity);
+        QFETCH(Vec3, spin);
+        QFETCH(bool, sleeps);
+        Scene s = floorScene();
+        s.bodies[0].friction = 0.0;
+        BodyDef cube = box("Cube", Vec3(0.5), Vec3(0, 0.5, 0));
+        cube.friction = 0.0;
+        cube.velocity = velocity;
+        cube.angularVelocity = spin;
+        s.bodies.push_back(cube);
+        World w = makeWorld(s);
+        QVERIFY(w.effects().has(Effect::Sleeping));
+        int asleepAt = -1;
+        for (int i = 1; i <= 180 && asleepAt < 0; ++i) {
+            w.step();
+            if (!w.isAwake(1))
+                asleepAt = i;
+        }
+        qInfo("asleep at frame %d (-1: awake after 3 s)", asleepAt);
+        if (sleeps) {
+            QVERIFY(asleepAt >= 30); // not before the 0.5 s window is full
+            QVERIFY(asleepAt <= 40);
+        } else {
+            QCOMPARE(asleepAt, -1);
+        }
     }
 
     void deterministicAcrossRunsAndThreads() {

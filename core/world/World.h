@@ -165,7 +165,7 @@ private:
         ContactSolver solver;
         std::vector<SolverBody> solverBodies;
         std::vector<Vec3> centers;
-        std::vector<uint32_t> activeContacts, indexA, indexB;
+        std::vector<uint32_t> activeContacts, indexA, indexB; // pool slots of the chunk's contacts; solver indices
         std::vector<Manifold> manifolds;
         std::vector<Real> friction, restitution;
         ClampCounters clamps;
@@ -210,13 +210,17 @@ private:
     CombineRule m_restitutionRule = CombineRule::Max;
 
     BroadPhase m_broadPhase;
-    std::vector<Contact> m_contacts; // in broadphase pair order
-    std::vector<uint32_t> m_island;  // island root per body (union-find), recomputed every step
+    // Every broadphase pair's contact lives in a slot of the pool; m_pairContacts lists the slots in pair order,
+    // which is the order every stage visits them in. Slots of ended pairs are reused (see findPairs()).
+    std::vector<Contact> m_contactPool;
+    std::vector<uint32_t> m_pairContacts;
+    std::vector<uint32_t> m_freeContacts;
+    std::vector<uint32_t> m_island; // island root per body (union-find), recomputed every step
     // Shape-to-world transform per body, taken once at the start of the step: the broadphase and every pair of
     // the narrowphase need it, and each mat3_cast costs more than the lookup.
     std::vector<Transform> m_transforms;
     // Scratch of findPairs() and solve(), kept between steps so that a step does not allocate.
-    std::vector<Contact> m_nextContacts;
+    std::vector<uint32_t> m_nextPairContacts;
     std::vector<uint32_t> m_group;
     std::vector<uint8_t> m_refinement; // per body: its island's substep multiplier this step, 0 when not moving
     std::vector<Real> m_islandMinMass, m_islandMaxMass;

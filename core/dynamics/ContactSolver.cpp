@@ -142,24 +142,92 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
             std::stable_sort(c.order, c.order + m.pointCount,
                              [&](uint8_t l, uint8_t r) { return m.points[l].separation < m.points[r].separation; });
     }
+    scheduleLevels(bodies.size());
+    m_sweepRows = {};
+    for (const ContactConstraint& c : m_constraints) {
+        m_sweepRows.normalRows += static_cast<uint64_t>(c.pointCount);
+        if (settings.friction && c.friction > 0.0)
+            m_sweepRows.frictionRows += 2u * static_cast<uint64_t>(c.pointCount);
+    }
+}
+
+void ContactSolver::scheduleLevels(size_t bodyCount) {
+    // Level schedule of the sequential order: a constraint's level is one more than the highest level among the
+    // earlier constraints (in manifold order) that share one of its moving bodies. Solving level by level then
+    // performs, for every body, the same updates in the same order as solving the constraints one after the other,
+    // so the result is bit-identical to the sequential sweep; and the constraints of one level share no moving
+    // body, so they can be solved in any order or at once on several threads. (A greedy colouring, as Box2D v3
+    // uses, reorders constraints that share a body: in a tower it solves every other contact first, which here let
+    // the 20-cube tower's top drift 5.6 mm instead of 0.7 mm and the 210-cube pyramid's 9.5 mm instead of 0.24 mm.)
+    // Entry 0 (anchors and sleepers) does not count: it is never written.
+    thread_local std::vector<uint32_t> nextLevel;
+    nextLevel.assign(bodyCount, 0);
+    m_levelOf.resize(m_constraints.size());
+    uint32_t levels = 0;
+    for (size_t i = 0; i < m_constraints.size(); ++i) {
+        const ContactConstraint& c = m_constraints[i];
+        const uint32_t level = std::max(c.bodyA != 0 ? nextLevel[c.bodyA] : 0u, c.bodyB != 0 ? nextLevel[c.bodyB] : 0u);
+        if (c.bodyA != 0)
+            nextLevel[c.bodyA] = level + 1;
+        if (c.bodyB != 0)
+            nextLevel[c.bodyB] = level + 1;
+        m_levelOf[i] = level;
+        levels = std::max(levels, level + 1);
+    }
+    m_levelStart.assign(static_cast<size_t>(levels) + 1, 0);
+    for (uint32_t level : m_levelOf)
+        ++m_levelStart[static_cast<size_t>(level) + 1];
+    for (uint32_t k = 0; k < levels; ++k)
+        m_levelStart[k + 1] += m_levelStart[k];
+    thread_local std::vector<uint32_t> fill;
+    fill.assign(m_levelStart.begin(), m_levelStart.end() - 1);
+    m_solveOrder.resize(m_constraints.size());
+    for (size_t i = 0; i < m_constraints.size(); ++i)
+        m_solveOrder[fill[m_levelOf[i]]++] = static_cast<uint32_t>(i);
 }
 
 void ContactSolver::warmStart(std::span<SolverBody> bodies) {
-    m_elapsed += m_h;
+    beginSubstep();
     if (!m_settings.warmStarting)
         return;
-    for (ContactConstraint& c : m_constraints) {
-        SolverBody& a = bodies[c.bodyA];
-        SolverBody& b = bodies[c.bodyB];
-        for (int k = 0; k < c.pointCount; ++k) {
-            const ContactConstraint::Point& p = c.points[k];
-            if (p.normalImpulse == 0.0 && p.tangentImpulse[0] == 0.0 && p.tangentImpulse[1] == 0.0)
-                continue; // a speculative point that never pushed: nothing to apply
-            applyRow(a, b, p, 0, c.normal, p.normalImpulse);
-            applyRow(a, b, p, 1, c.tangent[0], p.tangentImpulse[0]);
-            applyRow(a, b, p, 2, c.tangent[1], p.tangentImpulse[1]);
-        }
+    // Manifold order: the same result as level by level, and neighbouring constraints stay neighbours in memory.
+    for (size_t i = 0; i < m_constraints.size(); ++i)
+        warmStartOne(bodies, m_constraints[i]);
+}
+
+namespace {
+
+template <bool kStaticA, bool kStaticB>
+void warmStartConstraint(const ContactConstraint& c, SolverBody& a, SolverBody& b) {
+    for (int k = 0; k < c.pointCount; ++k) {
+        const ContactConstraint::Point& p = c.points[k];
+        if (p.normalImpulse == 0.0 && p.tangentImpulse[0] == 0.0 && p.tangentImpulse[1] == 0.0)
+            continue; // a speculative point that never pushed: nothing to apply
+        applyRowT<kStaticA, kStaticB>(a, b, p, 0, c.normal, p.normalImpulse);
+        applyRowT<kStaticA, kStaticB>(a, b, p, 1, c.tangent[0], p.tangentImpulse[0]);
+        applyRowT<kStaticA, kStaticB>(a, b, p, 2, c.tangent[1], p.tangentImpulse[1]);
     }
+}
+
+} // namespace
+
+void ContactSolver::warmStartOne(std::span<SolverBody> bodies, const ContactConstraint& c) {
+    SolverBody& a = bodies[c.bodyA];
+    SolverBody& b = bodies[c.bodyB];
+    // The static entry 0 is never written: with several threads on one level it is shared.
+    if (c.bodyA == 0)
+        warmStartConstraint<true, false>(c, a, b);
+    else if (c.bodyB == 0)
+        warmStartConstraint<false, true>(c, a, b);
+    else
+        warmStartConstraint<false, false>(c, a, b);
+}
+
+void ContactSolver::warmStartRange(std::span<SolverBody> bodies, size_t begin, size_t end) {
+    if (!m_settings.warmStarting)
+        return;
+    for (size_t n = begin; n < end; ++n)
+        warmStartOne(bodies, m_constraints[m_solveOrder[n]]);
 }
 
 namespace {
@@ -228,19 +296,32 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
 } // namespace
 
 void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
-    for (ContactConstraint& c : m_constraints) {
-        SolverBody& a = bodies[c.bodyA];
-        SolverBody& b = bodies[c.bodyB];
-        if (c.bodyA == 0)
-            solveConstraint<true, false>(c, a, b, useBias, m_inverseH, m_elapsed, m_soft, m_settings);
-        else if (c.bodyB == 0)
-            solveConstraint<false, true>(c, a, b, useBias, m_inverseH, m_elapsed, m_soft, m_settings);
-        else
-            solveConstraint<false, false>(c, a, b, useBias, m_inverseH, m_elapsed, m_soft, m_settings);
-        m_counters.normalRows += static_cast<uint64_t>(c.pointCount);
-        if (m_settings.friction && c.friction > 0.0)
-            m_counters.frictionRows += 2u * static_cast<uint64_t>(c.pointCount);
-    }
+    // Manifold order, as in warmStart(). Level by level gave the same result but made the 5,050-cube pyramid's
+    // step 1.6 times as slow on one thread: a level's constraints are spread over the whole pile.
+    for (ContactConstraint& c : m_constraints)
+        solveOne(bodies, c, useBias);
+    countSweep();
+}
+
+void ContactSolver::solveOne(std::span<SolverBody> bodies, ContactConstraint& c, bool useBias) {
+    SolverBody& a = bodies[c.bodyA];
+    SolverBody& b = bodies[c.bodyB];
+    if (c.bodyA == 0)
+        solveConstraint<true, false>(c, a, b, useBias, m_inverseH, m_elapsed, m_soft, m_settings);
+    else if (c.bodyB == 0)
+        solveConstraint<false, true>(c, a, b, useBias, m_inverseH, m_elapsed, m_soft, m_settings);
+    else
+        solveConstraint<false, false>(c, a, b, useBias, m_inverseH, m_elapsed, m_soft, m_settings);
+}
+
+void ContactSolver::solveRange(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end) {
+    for (size_t n = begin; n < end; ++n)
+        solveOne(bodies, m_constraints[m_solveOrder[n]], useBias);
+}
+
+void ContactSolver::countSweep() {
+    m_counters.normalRows += m_sweepRows.normalRows;
+    m_counters.frictionRows += m_sweepRows.frictionRows;
 }
 
 void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {

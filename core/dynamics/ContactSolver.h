@@ -100,6 +100,19 @@ public:
     void warmStart(std::span<SolverBody> bodies);
     // useBias = true: the soft solve that pushes overlap apart; false: the relax pass that removes the bias velocity.
     void solve(std::span<SolverBody> bodies, bool useBias);
+
+    // The same, split up for several threads. Constraints are solved level by level (see scheduleLevels()), which
+    // gives the same result as the sequential order: positions begin..end of the solve order within one level may run
+    // on different threads at once. A substep is beginSubstep() once, then warmStartRange() over every level, then
+    // sweeps of solveRange() over every level, each sweep followed by countSweep() once.
+    size_t levelCount() const { return m_levelStart.empty() ? 0 : m_levelStart.size() - 1; }
+    size_t levelBegin(size_t level) const { return m_levelStart[level]; }
+    size_t levelEnd(size_t level) const { return m_levelStart[level + 1]; }
+    std::span<const uint32_t> solveOrder() const { return m_solveOrder; } // constraint indices, level by level
+    void beginSubstep() { m_elapsed += m_h; }
+    void warmStartRange(std::span<SolverBody> bodies, size_t begin, size_t end);
+    void solveRange(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
+    void countSweep();
     // Bounces every point that approached faster than the threshold and pushed back: its normal speed becomes
     // -e times the approach speed. Both are speeds at the instant of impact. The solver's velocities are means over
     // a substep (the position update is x += v h), which under a constant relative acceleration a_n along the normal
@@ -116,13 +129,21 @@ public:
     void resetCounters() { m_counters = {}; }
 
 private:
+    void scheduleLevels(size_t bodyCount);
+    void warmStartOne(std::span<SolverBody> bodies, const ContactConstraint& c);
+    void solveOne(std::span<SolverBody> bodies, ContactConstraint& c, bool useBias);
+
     std::vector<ContactConstraint> m_constraints;
+    std::vector<uint32_t> m_levelOf;    // per constraint
+    std::vector<uint32_t> m_solveOrder; // constraint indices, level by level, manifold order within a level
+    std::vector<uint32_t> m_levelStart; // level k: m_solveOrder[m_levelStart[k], m_levelStart[k + 1])
     ContactSolverSettings m_settings;
     Real m_inverseH = 0.0;
     Real m_h = 0.0;
     Real m_elapsed = 0.0; // time from the step start to the end of the current substep's velocity update
     Softness m_soft;
     ContactSolverCounters m_counters;
+    ContactSolverCounters m_sweepRows; // rows of one sweep over every constraint
 };
 
 // Two unit tangents orthogonal to n, chosen deterministically.

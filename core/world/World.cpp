@@ -6,9 +6,10 @@
 #include "scene/BodyProperties.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numeric>
-#include <thread>
+#include <optional>
 
 namespace rl {
 
@@ -44,6 +45,8 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
     w.m_iterations = options.iterations.value_or(ws.iterations);
     w.m_integrator = options.integrator.value_or(ws.integrator);
     w.m_threads = std::clamp(options.threads, 1, 64);
+    if (w.m_threads > 1)
+        w.m_team = std::make_unique<ThreadTeam>(w.m_threads);
     auto settingsError = [&](std::string message) {
         Error e;
         e.file = scene.sourcePath;
@@ -379,23 +382,22 @@ void World::narrowphase() {
         if (m_state.isMoving(m_contactPool[slot].bodyA) || m_state.isMoving(m_contactPool[slot].bodyB))
             active.push_back(slot);
 
-    // Each pair writes only its own contact, so splitting the list over threads gives identical results.
-    const int threads = std::min<int>(m_threads, static_cast<int>(active.size() / 64) + 1);
-    if (threads <= 1) {
-        for (uint32_t slot : active)
-            collidePair(m_contactPool[slot]);
-    } else {
-        std::vector<std::thread> workers;
-        const size_t chunk = (active.size() + threads - 1) / threads;
-        for (int t = 0; t < threads; ++t) {
-            const size_t begin = t * chunk, end = std::min(active.size(), begin + chunk);
-            workers.emplace_back([this, &active, begin, end] {
+    // Each pair writes only its own contact, so sharing the list out over threads gives identical results. The
+    // members take small batches as they go: a full SAT costs many times an early out, and even halves of the list
+    // kept one thread waiting for the other.
+    if (m_team && active.size() >= 128) {
+        constexpr size_t kBatch = 16;
+        std::atomic<size_t> next{0};
+        m_team->run([&](int) {
+            for (size_t begin = next.fetch_add(kBatch); begin < active.size(); begin = next.fetch_add(kBatch)) {
+                const size_t end = std::min(active.size(), begin + kBatch);
                 for (size_t i = begin; i < end; ++i)
                     collidePair(m_contactPool[active[i]]);
-            });
-        }
-        for (std::thread& worker : workers)
-            worker.join();
+            }
+        });
+    } else {
+        for (uint32_t slot : active)
+            collidePair(m_contactPool[slot]);
     }
 
     // A touching contact between an awake body and a sleeping one wakes the sleeper's island.
@@ -507,7 +509,6 @@ void World::solve() {
 
     m_solverCounters = {};
     m_solverIndex.assign(n, 0);
-    m_chunkOf.assign(n, 0);
     for (int k = 1; k <= finest; ++k) {
         std::vector<uint32_t>& group = m_group;
         group.clear();
@@ -524,79 +525,30 @@ void World::solve() {
 }
 
 void World::solveGroup(std::span<const uint32_t> group, int refinement) {
-    // Islands share no moving body (the static entry 0 of each chunk never changes), so splitting a group's islands
-    // over chunks and solving each chunk on its own thread gives bit-identical results for any thread count: every
-    // constraint sees the same operations in the same order on the same bodies.
-    const int wanted = group.size() >= kMinBodiesPerThread ? m_threads : 1;
-    const int chunkCount =
-        std::max(1, std::min<int>(wanted, static_cast<int>(group.size() / (kMinBodiesPerThread / 2))));
-    if (static_cast<int>(m_chunks.size()) < chunkCount)
-        m_chunks.resize(static_cast<size_t>(chunkCount));
-    for (int k = 0; k < chunkCount; ++k)
-        m_chunks[k].bodies.clear();
-    if (chunkCount == 1) {
-        m_chunks[0].bodies.assign(group.begin(), group.end());
-    } else {
-        // Whole islands, in the order of their first body, fill the chunks one after the other, so that each
-        // thread writes its own run of the body arrays (islands dealt out alternately made the two threads write
-        // the same cache lines and gave no speedup). Deterministic; one big island stays on one thread.
-        m_islandChunk.assign(m_state.size(), -1);
-        m_islandSize.assign(m_state.size(), 0);
-        for (uint32_t i : group)
-            ++m_islandSize[m_island[i]];
-        size_t assigned = 0;
-        for (uint32_t i : group) {
-            const uint32_t root = m_island[i];
-            if (m_islandChunk[root] < 0) {
-                m_islandChunk[root] = static_cast<int32_t>(
-                    std::min<size_t>(static_cast<size_t>(chunkCount) - 1, assigned * chunkCount / group.size()));
-                assigned += m_islandSize[root];
-            }
-            m_chunks[static_cast<size_t>(m_islandChunk[root])].bodies.push_back(i);
-        }
-    }
-    for (int k = 0; k < chunkCount; ++k)
-        for (uint32_t i : m_chunks[k].bodies)
-            m_chunkOf[i] = static_cast<uint8_t>(k);
-
-    // Contacts go to the chunk of their moving body. (Two moving bodies that touch share an island, so a contact
-    // never straddles two groups or two chunks.)
+    SolveChunk& chunk = m_chunk;
+    chunk.bodies.assign(group.begin(), group.end());
+    // The group's contacts: those with a moving body of this group. (Two moving bodies that touch share an island,
+    // and so a refinement, so a contact never straddles two groups.)
     const auto inGroup = [&](uint32_t body) { return m_state.isMoving(body) && m_refinement[body] == refinement; };
-    for (int k = 0; k < chunkCount; ++k)
-        m_chunks[k].clearContacts();
+    chunk.clearContacts();
     for (uint32_t slot : m_pairContacts) {
         const Contact& contact = m_contactPool[slot];
         if (contact.manifold.pointCount == 0)
             continue;
-        const bool a = inGroup(contact.bodyA), b = inGroup(contact.bodyB);
-        if (!a && !b)
-            continue;
-        m_chunks[m_chunkOf[a ? contact.bodyA : contact.bodyB]].activeContacts.push_back(slot);
+        if (inGroup(contact.bodyA) || inGroup(contact.bodyB))
+            chunk.activeContacts.push_back(slot);
     }
-
-    const int substeps = m_substeps * refinement;
-    if (chunkCount == 1) {
-        solveChunk(m_chunks[0], substeps, true);
-    } else {
-        StageTimer t(m_profile, Stage::Solve); // the per-stage timers are not thread safe: the whole solve counts here
-        std::vector<std::thread> workers;
-        for (int k = 1; k < chunkCount; ++k)
-            workers.emplace_back([this, k, substeps] { solveChunk(m_chunks[k], substeps, false); });
-        solveChunk(m_chunks[0], substeps, false);
-        for (std::thread& worker : workers)
-            worker.join();
+    solveChunk(chunk, m_substeps * refinement);
+    const ContactSolverCounters& sc = chunk.solver.counters();
+    m_solverCounters.normalRows += sc.normalRows;
+    m_solverCounters.frictionRows += sc.frictionRows;
+    m_solverCounters.restitutionRows += sc.restitutionRows;
+    for (ClampCounters& clamps : chunk.clamps) {
+        m_state.clampCounters.linear += clamps.linear;
+        m_state.clampCounters.angular += clamps.angular;
+        clamps = {};
     }
-    for (int k = 0; k < chunkCount; ++k) {
-        SolveChunk& chunk = m_chunks[k];
-        const ContactSolverCounters& sc = chunk.solver.counters();
-        m_solverCounters.normalRows += sc.normalRows;
-        m_solverCounters.frictionRows += sc.frictionRows;
-        m_solverCounters.restitutionRows += sc.restitutionRows;
-        m_state.clampCounters.linear += chunk.clamps.linear;
-        m_state.clampCounters.angular += chunk.clamps.angular;
-        chunk.clamps = {};
-    }
-    m_profile.count(Counter::IntegratedBodies, group.size() * static_cast<uint64_t>(substeps));
+    m_profile.count(Counter::IntegratedBodies, group.size() * static_cast<uint64_t>(m_substeps * refinement));
 }
 
 void World::SolveChunk::clearContacts() {
@@ -608,14 +560,13 @@ void World::SolveChunk::clearContacts() {
     restitution.clear();
 }
 
-void World::solveChunk(SolveChunk& chunk, int substeps, bool timed) {
+void World::solveChunk(SolveChunk& chunk, int substeps) {
     const Real dt = 1.0 / m_fps;
     const Real h = dt / substeps;
     const bool rotation = m_effects.effects.has(Effect::Rotation);
     const std::vector<uint32_t>& group = chunk.bodies;
 
-    // Solver bodies: entry 0 stands for every immovable body (anchors and sleepers); the chunk's bodies follow.
-    // A body's solver index is written only by its own chunk.
+    // Solver bodies: entry 0 stands for every immovable body (anchors and sleepers); the group's bodies follow.
     std::vector<SolverBody>& bodies = chunk.solverBodies;
     bodies.assign(group.size() + 1, SolverBody{});
     chunk.centers.assign(group.size() + 1, Vec3(0.0));
@@ -637,77 +588,125 @@ void World::solveChunk(SolveChunk& chunk, int substeps, bool timed) {
         chunk.friction.push_back(contact.friction);
         chunk.restitution.push_back(contact.restitution);
     }
-    auto toSolver = [&] {
-        for (size_t k = 0; k < group.size(); ++k) {
+
+    // Velocities between the body state and the solver's copy, for the group's bodies first..last-1.
+    const auto toSolver = [&](size_t first, size_t last) {
+        for (size_t k = first; k < last; ++k) {
             bodies[k + 1].v = m_state.linearVelocity[group[k]];
             bodies[k + 1].w = rotation ? m_state.angularVelocity[group[k]] : Vec3(0.0);
         }
     };
-    auto fromSolver = [&] {
-        for (size_t k = 0; k < group.size(); ++k) {
+    const auto fromSolver = [&](size_t first, size_t last) {
+        for (size_t k = first; k < last; ++k) {
             m_state.linearVelocity[group[k]] = bodies[k + 1].v;
             if (rotation)
                 m_state.angularVelocity[group[k]] = bodies[k + 1].w;
         }
     };
-    // Stage timers only on the world's own thread (Profile is not thread safe).
-    std::optional<StageTimer> t;
-    auto timer = [&](Stage stage) {
-        t.reset();
-        if (timed)
-            t.emplace(m_profile, stage);
-    };
-
     // prepare() records each point's approach speed for restitution, so it must see the current velocities.
-    toSolver();
+    toSolver(0, group.size());
     ContactSolverSettings settings = m_solverSettings;
     settings.contactHertz = 0.25 * m_fps * substeps; // a quarter of the substep rate (see ContactSolverSettings)
-    chunk.solver.resetCounters();
-    chunk.solver.prepare(chunk.manifolds, chunk.indexA, chunk.indexB, chunk.friction, chunk.restitution, bodies,
-                         chunk.centers, h, settings);
-    for (int s = 0; s < substeps; ++s) {
-        {
+    ContactSolver& solver = chunk.solver;
+    solver.resetCounters();
+    solver.prepare(chunk.manifolds, chunk.indexA, chunk.indexB, chunk.friction, chunk.restitution, bodies,
+                   chunk.centers, h, settings);
+
+    // The team solves the group together: bodies are split evenly for the integration, and each level of the
+    // solver's schedule is split evenly for the contacts, with a barrier after every level. Every body sees the
+    // same operations in the same order as on one thread, so the results are identical for any team size. A group
+    // too small to pay for the barriers is solved by member 0 alone.
+    const int members = m_team && group.size() >= kMinBodiesPerThread ? m_team->size() : 1;
+    chunk.clamps.resize(static_cast<size_t>(std::max(members, 1)));
+    const bool timed = members == 1; // the per-stage timers are not thread safe: then the whole solve counts
+    std::optional<StageTimer> solveTimer;
+    if (!timed)
+        solveTimer.emplace(m_profile, Stage::Solve);
+    const size_t levels = solver.levelCount();
+
+    auto job = [&](int member) {
+        const auto [first, last] = ThreadTeam::share(0, group.size(), member, members);
+        const std::span<const uint32_t> mine(group.data() + first, last - first);
+        const auto barrier = [&] {
+            if (members > 1)
+                m_team->barrier();
+        };
+        // One sweep of a solver pass over every level. (A team of one sweeps in manifold order instead, through
+        // ContactSolver::solve(): the same result, with better memory locality.)
+        const auto sweep = [&](auto&& range) {
+            for (size_t level = 0; level < levels; ++level) {
+                const auto [begin, end] =
+                    ThreadTeam::share(solver.levelBegin(level), solver.levelEnd(level), member, members);
+                range(begin, end);
+                barrier();
+            }
+        };
+        std::optional<StageTimer> t;
+        const auto timer = [&](Stage stage) {
+            t.reset();
+            if (timed)
+                t.emplace(m_profile, stage);
+        };
+        for (int s = 0; s < substeps; ++s) {
             timer(Stage::IntegrateVelocities);
-            integrateVelocities(m_state, group, h, m_gravity, m_damping, m_integrator, rotation, chunk.clamps);
-        }
-        toSolver();
-        {
-            timer(Stage::WarmStart);
-            chunk.solver.warmStart(bodies);
-        }
-        {
-            timer(Stage::Solve);
-            for (int it = 0; it < m_iterations; ++it)
-                chunk.solver.solve(bodies, true);
-        }
-        fromSolver();
-        {
+            integrateVelocities(m_state, mine, h, m_gravity, m_damping, m_integrator, rotation, chunk.clamps[member]);
+            toSolver(first, last);
+            if (members == 1) {
+                timer(Stage::WarmStart);
+                solver.warmStart(bodies);
+                timer(Stage::Solve);
+                for (int it = 0; it < m_iterations; ++it)
+                    solver.solve(bodies, true);
+            } else {
+                if (member == 0)
+                    solver.beginSubstep(); // read only by the solve sweeps, after the warm start's barriers
+                barrier();
+                sweep([&](size_t begin, size_t end) { solver.warmStartRange(bodies, begin, end); });
+                for (int it = 0; it < m_iterations; ++it) {
+                    sweep([&](size_t begin, size_t end) { solver.solveRange(bodies, true, begin, end); });
+                    if (member == 0)
+                        solver.countSweep();
+                }
+            }
             timer(Stage::IntegratePositions);
-            integratePositions(m_state, group, h, m_gravity, m_damping, m_integrator, rotation);
-            for (size_t k = 0; k < group.size(); ++k) {
+            fromSolver(first, last);
+            integratePositions(m_state, mine, h, m_gravity, m_damping, m_integrator, rotation);
+            for (size_t k = first; k < last; ++k) {
                 const uint32_t i = group[k];
                 bodies[k + 1].dp = m_state.position[i] - m_stepStartPosition[i];
                 bodies[k + 1].dR =
                     glm::mat3_cast(glm::normalize(m_state.orientation[i] * glm::conjugate(m_stepStartOrientation[i])));
             }
-        }
-        toSolver();
-        {
+            toSolver(first, last);
+            barrier();
             timer(Stage::Relax);
-            for (int it = 0; it < m_tuning.relaxIterations; ++it)
-                chunk.solver.solve(bodies, false);
+            for (int it = 0; it < m_tuning.relaxIterations; ++it) {
+                if (members == 1) {
+                    solver.solve(bodies, false);
+                    continue;
+                }
+                sweep([&](size_t begin, size_t end) { solver.solveRange(bodies, false, begin, end); });
+                if (member == 0)
+                    solver.countSweep();
+            }
+            // No barrier here: until the next one, each member touches only its own bodies.
+            fromSolver(first, last);
+            t.reset();
         }
-        fromSolver();
-        t.reset();
-    }
+    };
+    if (members > 1)
+        m_team->run(job);
+    else
+        job(0);
+    solveTimer.reset();
+
     if (m_solverSettings.restitution) {
-        timer(Stage::Restitution);
-        toSolver();
-        chunk.solver.applyRestitution(bodies);
-        fromSolver();
-        t.reset();
+        StageTimer t(m_profile, Stage::Restitution);
+        toSolver(0, group.size());
+        solver.applyRestitution(bodies);
+        fromSolver(0, group.size());
     }
-    chunk.solver.storeImpulses(chunk.manifolds);
+    solver.storeImpulses(chunk.manifolds);
     for (size_t k = 0; k < chunk.activeContacts.size(); ++k)
         m_contactPool[chunk.activeContacts[k]].manifold = chunk.manifolds[k];
     for (uint32_t i : group)

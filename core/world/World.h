@@ -12,7 +12,9 @@
 #include "scene/Scene.h"
 #include "world/Effects.h"
 #include "world/Profile.h"
+#include "world/ThreadTeam.h"
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -27,7 +29,7 @@ struct WorldOptions {
     std::optional<int> iterations;
     std::optional<Integrator> integrator;
     std::optional<EffectsSetting> effects;
-    int threads = 1; // worker threads for the narrowphase and the islands' solve; results are identical for any count
+    int threads = 1; // threads of the narrowphase and the contact solve; results are identical for any count
 };
 
 // Tuning constants of the contact pipeline, with where they come from.
@@ -159,7 +161,7 @@ private:
     void buildIslands();
     void solve();
     void solveGroup(std::span<const uint32_t> group, int refinement);
-    // One thread's share of a group: whole islands, with their own solver and scratch.
+    // The solver and scratch of the group being solved.
     struct SolveChunk {
         std::vector<uint32_t> bodies;
         ContactSolver solver;
@@ -168,11 +170,11 @@ private:
         std::vector<uint32_t> activeContacts, indexA, indexB; // pool slots of the chunk's contacts; solver indices
         std::vector<Manifold> manifolds;
         std::vector<Real> friction, restitution;
-        ClampCounters clamps;
+        std::vector<ClampCounters> clamps; // per member of the team
         void clearContacts();
     };
-    void solveChunk(SolveChunk& chunk, int substeps, bool timed);
-    // A group is split over threads only from this many bodies on (and at half of it per chunk).
+    void solveChunk(SolveChunk& chunk, int substeps);
+    // A group is solved by the whole team only from this many bodies on.
     static constexpr size_t kMinBodiesPerThread = 128;
     int substepRefinement(Real massRatio) const;
     void continuousCollision();
@@ -189,6 +191,8 @@ private:
     Vec3 m_gravity{0.0};
     Damping m_damping;
     int m_threads = 1;
+    // Worker threads of the narrowphase and the solve when m_threads > 1.
+    std::unique_ptr<ThreadTeam> m_team;
     WorldTuning m_tuning;
     EffectsDecision m_effects;
     ContactSolverSettings m_solverSettings;
@@ -225,10 +229,7 @@ private:
     std::vector<uint8_t> m_refinement; // per body: its island's substep multiplier this step, 0 when not moving
     std::vector<Real> m_islandMinMass, m_islandMaxMass;
     std::vector<uint32_t> m_narrowActive, m_solverIndex, m_moving;
-    std::vector<SolveChunk> m_chunks;   // one per thread of the solve
-    std::vector<uint8_t> m_chunkOf;     // per body: its chunk in the current group
-    std::vector<int32_t> m_islandChunk; // per island root: its chunk, -1 before it is assigned
-    std::vector<size_t> m_islandSize;   // per island root: moving bodies in the current group
+    SolveChunk m_chunk;
     ContactSolverCounters m_solverCounters;
     std::vector<Vec3> m_stepStartPosition;
     std::vector<Quat> m_stepStartOrientation;

@@ -1,0 +1,95 @@
+#include "world/ThreadTeam.h"
+
+#include <algorithm>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
+namespace rl {
+
+namespace {
+
+inline void cpuRelax() {
+#if defined(__x86_64__) || defined(__i386__)
+    _mm_pause();
+#else
+    std::this_thread::yield();
+#endif
+}
+
+// The solve meets at a barrier every few microseconds, so a member spins this long before it sleeps; between the
+// world's steps the workers go to sleep after it.
+constexpr int kSpins = 4000;
+
+} // namespace
+
+ThreadTeam::ThreadTeam(int size) : m_size(std::max(1, size)) {
+    m_workers.reserve(static_cast<size_t>(m_size - 1));
+    for (int member = 1; member < m_size; ++member)
+        m_workers.emplace_back([this, member] { work(member); });
+}
+
+ThreadTeam::~ThreadTeam() {
+    m_stop.store(true, std::memory_order_relaxed);
+    m_jobGeneration.fetch_add(1, std::memory_order_release);
+    m_jobGeneration.notify_all();
+    for (std::thread& worker : m_workers)
+        worker.join();
+}
+
+void ThreadTeam::awaitChange(const std::atomic<uint32_t>& counter, uint32_t seen) {
+    for (int i = 0; i < kSpins; ++i) {
+        if (counter.load(std::memory_order_acquire) != seen)
+            return;
+        cpuRelax();
+    }
+    while (counter.load(std::memory_order_acquire) == seen)
+        counter.wait(seen, std::memory_order_acquire);
+}
+
+void ThreadTeam::work(int member) {
+    uint32_t seen = 0;
+    for (;;) {
+        awaitChange(m_jobGeneration, seen);
+        seen = m_jobGeneration.load(std::memory_order_acquire);
+        if (m_stop.load(std::memory_order_relaxed))
+            return;
+        (*m_job)(member);
+        if (m_unfinished.fetch_sub(1, std::memory_order_acq_rel) == 1)
+            m_unfinished.notify_all();
+    }
+}
+
+void ThreadTeam::run(const std::function<void(int)>& job) {
+    if (m_size == 1) {
+        job(0);
+        return;
+    }
+    m_job = &job;
+    m_unfinished.store(static_cast<uint32_t>(m_size - 1), std::memory_order_relaxed);
+    m_jobGeneration.fetch_add(1, std::memory_order_release);
+    m_jobGeneration.notify_all();
+    job(0);
+    for (int i = 0; i < kSpins && m_unfinished.load(std::memory_order_acquire) != 0; ++i)
+        cpuRelax();
+    for (uint32_t left = m_unfinished.load(std::memory_order_acquire); left != 0;
+         left = m_unfinished.load(std::memory_order_acquire))
+        m_unfinished.wait(left, std::memory_order_acquire);
+    m_job = nullptr;
+}
+
+void ThreadTeam::barrier() {
+    if (m_size == 1)
+        return;
+    const uint32_t generation = m_barrierGeneration.load(std::memory_order_acquire);
+    if (m_arrived.fetch_add(1, std::memory_order_acq_rel) == static_cast<uint32_t>(m_size - 1)) {
+        m_arrived.store(0, std::memory_order_relaxed);
+        m_barrierGeneration.fetch_add(1, std::memory_order_release);
+        m_barrierGeneration.notify_all();
+        return;
+    }
+    awaitChange(m_barrierGeneration, generation);
+}
+
+} // namespace rl

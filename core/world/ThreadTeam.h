@@ -1,0 +1,50 @@
+// A fixed team of threads that run one job together and meet at barriers inside it. The caller of run() is member 0,
+// so a team of one runs the job on the calling thread with no synchronisation at all. The world uses it for the
+// narrowphase and for the level-by-level contact solve (ContactSolver), whose results do not depend on the team size.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <thread>
+#include <vector>
+
+namespace rl {
+
+class ThreadTeam {
+public:
+    explicit ThreadTeam(int size);
+    ~ThreadTeam();
+    ThreadTeam(const ThreadTeam&) = delete;
+    ThreadTeam& operator=(const ThreadTeam&) = delete;
+
+    int size() const { return m_size; }
+    // Runs job(member) on every member, member 0 on the calling thread, and returns when all have returned. A job
+    // must not throw, and must not call run() itself.
+    void run(const std::function<void(int member)>& job);
+    // Inside a job: returns once every member has called it; what each member wrote before is then visible to all.
+    void barrier();
+
+    // [begin, end) split evenly over the members: member k's part.
+    static std::pair<size_t, size_t> share(size_t begin, size_t end, int member, int members) {
+        const size_t n = end - begin;
+        return {begin + n * static_cast<size_t>(member) / static_cast<size_t>(members),
+                begin + n * static_cast<size_t>(member + 1) / static_cast<size_t>(members)};
+    }
+
+private:
+    void work(int member);
+    // Spins briefly on a changing counter, then sleeps on it (a futex) until it differs from `seen`.
+    static void awaitChange(const std::atomic<uint32_t>& counter, uint32_t seen);
+
+    int m_size = 1;
+    std::vector<std::thread> m_workers;
+    const std::function<void(int)>* m_job = nullptr;
+    std::atomic<uint32_t> m_jobGeneration{0}; // advanced to start a job (or to stop)
+    std::atomic<uint32_t> m_unfinished{0};    // workers still in the current job
+    std::atomic<uint32_t> m_arrived{0};       // members at the current barrier
+    std::atomic<uint32_t> m_barrierGeneration{0};
+    std::atomic<bool> m_stop{false};
+};
+
+} // namespace rl

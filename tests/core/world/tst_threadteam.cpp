@@ -1,0 +1,72 @@
+// The thread team: run() runs the job once on every member, member 0 on the calling thread; a barrier makes what
+// each member wrote before it visible to all after it; a team of one needs no other thread.
+#include "world/ThreadTeam.h"
+
+#include <QTest>
+
+#include <thread>
+
+using namespace rl;
+
+class TestThreadTeam : public QObject {
+    Q_OBJECT
+private slots:
+    void runsOnEveryMemberOnce_data() {
+        QTest::addColumn<int>("size");
+        QTest::newRow("1") << 1;
+        QTest::newRow("2") << 2;
+        QTest::newRow("4") << 4;
+    }
+    void runsOnEveryMemberOnce() {
+        QFETCH(int, size);
+        ThreadTeam team(size);
+        QCOMPARE(team.size(), size);
+        for (int job = 0; job < 200; ++job) {
+            std::vector<int> calls(static_cast<size_t>(size), 0);
+            std::thread::id first;
+            team.run([&](int member) {
+                ++calls[static_cast<size_t>(member)];
+                if (member == 0)
+                    first = std::this_thread::get_id();
+            });
+            for (int c : calls)
+                QCOMPARE(c, 1);
+            QCOMPARE(first, std::this_thread::get_id());
+        }
+    }
+
+    void barriersOrderTheRounds() {
+        // Each round every member writes its slot, meets the others, then reads every slot: all must be from this
+        // round. Then they meet again before the next round overwrites them.
+        ThreadTeam team(2);
+        std::vector<int> written(2, -1);
+        std::vector<int> wrong(2, 0);
+        team.run([&](int member) {
+            for (int round = 0; round < 500; ++round) {
+                written[static_cast<size_t>(member)] = round;
+                team.barrier();
+                for (int other : written)
+                    wrong[static_cast<size_t>(member)] += other != round ? 1 : 0;
+                team.barrier();
+            }
+        });
+        QCOMPARE(wrong, std::vector<int>(2, 0));
+    }
+
+    void shareSplitsWithoutGapsOrOverlap() {
+        for (int members : {1, 2, 3, 7})
+            for (size_t n : {size_t(0), size_t(1), size_t(5), size_t(1000)}) {
+                size_t next = 10;
+                for (int m = 0; m < members; ++m) {
+                    const auto [begin, end] = ThreadTeam::share(10, 10 + n, m, members);
+                    QCOMPARE(begin, next);
+                    QVERIFY(end >= begin);
+                    next = end;
+                }
+                QCOMPARE(next, 10 + n);
+            }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestThreadTeam)
+#include "tst_threadteam.moc"

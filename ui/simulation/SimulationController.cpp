@@ -36,6 +36,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 namespace rl {
 
@@ -610,7 +611,10 @@ bool SimulationController::startBake(int lastFrame, int firstFrame) {
         showStatus(tr("Nothing to bake: the scene has no bodies."));
         return false;
     }
-    Result<World> created = World::create(scene);
+    // A bake gives the same frames on any number of threads; it leaves one core to the interface.
+    WorldOptions bakeOptions;
+    bakeOptions.threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()) - 1, 1, 8);
+    Result<World> created = World::create(scene, bakeOptions);
     if (!created) {
         QMessageBox::warning(
             m_window, tr("Bake"),

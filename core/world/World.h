@@ -43,7 +43,7 @@ struct WorldTuning {
     // v3's default of 5 cm/s. The sleep test of Jolt, by displacement rather than by the instantaneous speed.
     // An instantaneous |v| + radius |w| < sleepSpeed (Box2D v3's measure) kept 7 of 36 piles of 1,000 random
     // boxes awake, still moving at 1.3-8.8 cm/s after 10 s (two relax sweeps; measured 2026-11-24). In seed 9, which
-    // we traced, one box resting on two single-point contacts rocked about the line between them at up to 1.5 cm/s
+    // we traced, one box resting on two single-point contacts rocked about the line between them at up to 1.9 cm/s
     // and 0.09 rad/s while its centre stayed within 0.1 mm, and held its island of 936 boxes awake (issue 4).
     Real sleepSpeed = 0.05;
     Real timeToSleep = 0.5; // s an island must stay slow before it sleeps

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <optional>
 #include <string>
@@ -51,6 +52,7 @@ struct BenchResult {
     int contacts = 0;
     // Profile totals over the run, grouped: broadphase, narrowphase, solver (islands through restitution), other.
     double broadMs = 0.0, narrowMs = 0.0, solveMs = 0.0, otherMs = 0.0;
+    uint64_t stateHash = 0; // FNV-1a over the bits of every body's position and orientation after the run
 };
 
 // Nearest-rank percentile of sorted values (p in (0, 1]).
@@ -157,15 +159,38 @@ bool runWorld(World& world, int frames, const QString& label, bool quiet, BenchR
                               Stage::IntegratePositions, Stage::Relax, Stage::Restitution});
     out.otherMs = groupMs(p, {Stage::Ccd, Stage::Sleep, Stage::StoreFrame});
 
+    uint64_t hash = 1469598103934665603ull;
+    const auto mix = [&](double value) {
+        uint64_t bits = 0;
+        std::memcpy(&bits, &value, sizeof bits);
+        hash = (hash ^ bits) * 1099511628211ull;
+    };
     for (size_t i = 0; i < world.bodyCount(); ++i) {
         const Vec3 c = world.centerOfMass(i);
+        const Quat q = world.shapeOrientation(i);
+        for (double value : {c.x, c.y, c.z, q.w, q.x, q.y, q.z})
+            mix(value);
         if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
             printError(label + ": '" + QString::fromStdString(world.name(i)) +
                        "': the simulation produced a non-finite position");
             return false;
         }
     }
+    out.stateHash = hash;
     return true;
+}
+
+// The same scene on one thread: the speedup of the threaded run, and whether both ended in the same state, bit for bit.
+QString threadsLine(const QString& label, int threads, const BenchResult& threaded, const BenchResult& one) {
+    const auto ratio = [](double a, double b) { return b > 0.0 ? a / b : 0.0; };
+    return QString("threads scene=%1 threads=%2 one_thread_median_ms=%3 speedup_median=%4 speedup_mean=%5 "
+                   "identical=%6\n")
+        .arg(label)
+        .arg(threads)
+        .arg(one.medianMs, 0, 'f', 3)
+        .arg(ratio(one.medianMs, threaded.medianMs), 0, 'f', 2)
+        .arg(ratio(one.meanMs, threaded.meanMs), 0, 'f', 2)
+        .arg(one.stateHash == threaded.stateHash ? "yes" : "no");
 }
 
 QString resultLine(const QString& label, const BenchResult& r) {
@@ -250,7 +275,11 @@ int runBench(const QStringList& arguments) {
                           .arg(kQuickFrames)
                           .arg(kScalingFrames),
                       "n"});
-    parser.addOption({"threads", "Worker threads for RigidLab's step (default 1).", "t"});
+    parser.addOption({"threads",
+                      "Threads for RigidLab's step (default 1). Above 1, each scene is then run again on one thread "
+                      "and a line threads scene=... one_thread_median_ms= speedup_median= speedup_mean= identical= "
+                      "compares them (identical: the same final state, bit for bit).",
+                      "t"});
     parser.addOption({"no-bullet", "Do not run Bullet on the same scenes."});
     parser.addOption({"no-sleep", "Keep every body awake in both engines (RigidLab: effects auto,-sleeping; Bullet: "
                                   "DISABLE_DEACTIVATION)."});
@@ -352,6 +381,23 @@ int runBench(const QStringList& arguments) {
         }
         printOut(resultLine(label, result));
         std::fflush(stdout);
+        if (threads > 1) {
+            WorldOptions single = options;
+            single.threads = 1;
+            Result<World> alone = World::create(scene, single);
+            BenchResult one;
+            if (!alone || !runWorld(alone.value(), target.frames, label + " (1 thread)", quiet, one)) {
+                failed = true;
+                continue;
+            }
+            printOut(threadsLine(label, threads, result, one));
+            std::fflush(stdout);
+            if (one.stateHash != result.stateHash) {
+                printError(label + ": the run on " + QString::number(threads) +
+                           " threads ended in a different state from the run on 1 thread");
+                failed = true;
+            }
+        }
         if (withBullet) {
             std::string error;
             std::unique_ptr<bench::BulletReference> bullet = bench::BulletReference::create(scene, noSleep, &error);

@@ -53,6 +53,26 @@ private slots:
         QVERIFY(f.value("contacts").toInt() > 0);
     }
 
+    // With --threads above 1 each scene runs again on one thread, and a line gives the speedup and whether the two
+    // runs ended in the same state, bit for bit.
+    void threadsLineComparesWithOneThread() {
+        const Run r = runCli({"bench", "ramps", "--frames", "30", "--threads", "2", "--quiet", "--no-bullet"});
+        QCOMPARE(r.exitCode, 0);
+        const QStringList lines = QString::fromUtf8(r.out).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 2);
+        QVERIFY(lines[1].startsWith("threads "));
+        const QHash<QString, QString> f = fields(lines[1]);
+        QCOMPARE(f.value("scene"), QStringLiteral("ramps"));
+        QCOMPARE(f.value("threads"), QStringLiteral("2"));
+        QCOMPARE(f.value("identical"), QStringLiteral("yes"));
+        for (const char* key : {"one_thread_median_ms", "speedup_median", "speedup_mean"}) {
+            bool ok = false;
+            const double v = f.value(key).toDouble(&ok);
+            QVERIFY2(ok && v > 0.0, key);
+        }
+        qInfo("%s", qPrintable(lines[1]));
+    }
+
     // Built with Debian's Bullet (CI installs libbullet-dev), every scene is also stepped in Bullet and the ratio of
     // the two costs is printed from the same run. ramps names the bundled 642-cube scene.
     void bulletComparison_data() {

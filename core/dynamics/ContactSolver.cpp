@@ -160,9 +160,9 @@ void ContactSolver::scheduleLevels(size_t bodyCount) {
     // uses, reorders constraints that share a body: in a tower it solves every other contact first, which here let
     // the 20-cube tower's top drift 5.6 mm instead of 0.7 mm and the 210-cube pyramid's 9.5 mm instead of 0.24 mm.)
     // Entry 0 (anchors and sleepers) does not count: it is never written.
-    thread_local std::vector<uint32_t> nextLevel;
+    thread_local std::vector<uint32_t> nextLevel, levelOf;
     nextLevel.assign(bodyCount, 0);
-    m_levelOf.resize(m_constraints.size());
+    levelOf.resize(m_constraints.size());
     uint32_t levels = 0;
     for (size_t i = 0; i < m_constraints.size(); ++i) {
         const ContactConstraint& c = m_constraints[i];
@@ -171,11 +171,11 @@ void ContactSolver::scheduleLevels(size_t bodyCount) {
             nextLevel[c.bodyA] = level + 1;
         if (c.bodyB != 0)
             nextLevel[c.bodyB] = level + 1;
-        m_levelOf[i] = level;
+        levelOf[i] = level;
         levels = std::max(levels, level + 1);
     }
     m_levelStart.assign(static_cast<size_t>(levels) + 1, 0);
-    for (uint32_t level : m_levelOf)
+    for (uint32_t level : levelOf)
         ++m_levelStart[static_cast<size_t>(level) + 1];
     for (uint32_t k = 0; k < levels; ++k)
         m_levelStart[k + 1] += m_levelStart[k];
@@ -183,7 +183,7 @@ void ContactSolver::scheduleLevels(size_t bodyCount) {
     fill.assign(m_levelStart.begin(), m_levelStart.end() - 1);
     m_solveOrder.resize(m_constraints.size());
     for (size_t i = 0; i < m_constraints.size(); ++i)
-        m_solveOrder[fill[m_levelOf[i]]++] = static_cast<uint32_t>(i);
+        m_solveOrder[fill[levelOf[i]]++] = static_cast<uint32_t>(i);
 }
 
 void ContactSolver::warmStart(std::span<SolverBody> bodies) {

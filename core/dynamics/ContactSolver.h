@@ -134,7 +134,6 @@ private:
     void solveOne(std::span<SolverBody> bodies, ContactConstraint& c, bool useBias);
 
     std::vector<ContactConstraint> m_constraints;
-    std::vector<uint32_t> m_levelOf;    // per constraint
     std::vector<uint32_t> m_solveOrder; // constraint indices, level by level, manifold order within a level
     std::vector<uint32_t> m_levelStart; // level k: m_solveOrder[m_levelStart[k], m_levelStart[k + 1])
     ContactSolverSettings m_settings;

@@ -44,9 +44,8 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
     w.m_substeps = options.substeps.value_or(ws.substeps);
     w.m_iterations = options.iterations.value_or(ws.iterations);
     w.m_integrator = options.integrator.value_or(ws.integrator);
-    w.m_threads = std::clamp(options.threads, 1, 64);
-    if (w.m_threads > 1)
-        w.m_team = std::make_unique<ThreadTeam>(w.m_threads);
+    if (const int threads = std::clamp(options.threads, 1, 64); threads > 1)
+        w.m_team = std::make_unique<ThreadTeam>(threads);
     auto settingsError = [&](std::string message) {
         Error e;
         e.file = scene.sourcePath;
@@ -525,25 +524,25 @@ void World::solve() {
 }
 
 void World::solveGroup(std::span<const uint32_t> group, int refinement) {
-    SolveChunk& chunk = m_chunk;
-    chunk.bodies.assign(group.begin(), group.end());
+    SolveScratch& scratch = m_scratch;
+    scratch.bodies.assign(group.begin(), group.end());
     // The group's contacts: those with a moving body of this group. (Two moving bodies that touch share an island,
     // and so a refinement, so a contact never straddles two groups.)
     const auto inGroup = [&](uint32_t body) { return m_state.isMoving(body) && m_refinement[body] == refinement; };
-    chunk.clearContacts();
+    scratch.clearContacts();
     for (uint32_t slot : m_pairContacts) {
         const Contact& contact = m_contactPool[slot];
         if (contact.manifold.pointCount == 0)
             continue;
         if (inGroup(contact.bodyA) || inGroup(contact.bodyB))
-            chunk.activeContacts.push_back(slot);
+            scratch.activeContacts.push_back(slot);
     }
-    solveChunk(chunk, m_substeps * refinement);
-    const ContactSolverCounters& sc = chunk.solver.counters();
+    solveSubsteps(m_substeps * refinement);
+    const ContactSolverCounters& sc = scratch.solver.counters();
     m_solverCounters.normalRows += sc.normalRows;
     m_solverCounters.frictionRows += sc.frictionRows;
     m_solverCounters.restitutionRows += sc.restitutionRows;
-    for (ClampCounters& clamps : chunk.clamps) {
+    for (ClampCounters& clamps : scratch.clamps) {
         m_state.clampCounters.linear += clamps.linear;
         m_state.clampCounters.angular += clamps.angular;
         clamps = {};
@@ -551,7 +550,7 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
     m_profile.count(Counter::IntegratedBodies, group.size() * static_cast<uint64_t>(m_substeps * refinement));
 }
 
-void World::SolveChunk::clearContacts() {
+void World::SolveScratch::clearContacts() {
     activeContacts.clear();
     manifolds.clear();
     indexA.clear();
@@ -560,16 +559,17 @@ void World::SolveChunk::clearContacts() {
     restitution.clear();
 }
 
-void World::solveChunk(SolveChunk& chunk, int substeps) {
+void World::solveSubsteps(int substeps) {
+    SolveScratch& scratch = m_scratch;
     const Real dt = 1.0 / m_fps;
     const Real h = dt / substeps;
     const bool rotation = m_effects.effects.has(Effect::Rotation);
-    const std::vector<uint32_t>& group = chunk.bodies;
+    const std::vector<uint32_t>& group = scratch.bodies;
 
     // Solver bodies: entry 0 stands for every immovable body (anchors and sleepers); the group's bodies follow.
-    std::vector<SolverBody>& bodies = chunk.solverBodies;
+    std::vector<SolverBody>& bodies = scratch.solverBodies;
     bodies.assign(group.size() + 1, SolverBody{});
-    chunk.centers.assign(group.size() + 1, Vec3(0.0));
+    scratch.centers.assign(group.size() + 1, Vec3(0.0));
     for (size_t k = 0; k < group.size(); ++k) {
         const uint32_t i = group[k];
         m_solverIndex[i] = static_cast<uint32_t>(k + 1);
@@ -577,16 +577,16 @@ void World::solveChunk(SolveChunk& chunk, int substeps) {
         b.invMass = m_state.invMass[i];
         // Linear-only mode: the solver must not spin bodies either.
         b.invInertia = rotation ? m_state.worldInverseInertia(i) : Mat3(0.0);
-        chunk.centers[k + 1] = m_state.position[i];
+        scratch.centers[k + 1] = m_state.position[i];
     }
-    for (uint32_t slot : chunk.activeContacts) {
+    for (uint32_t slot : scratch.activeContacts) {
         const Contact& contact = m_contactPool[slot];
-        chunk.manifolds.push_back(contact.manifold);
+        scratch.manifolds.push_back(contact.manifold);
         // Sleepers and anchors have solver index 0; so does a moving body of another group, which cannot touch.
-        chunk.indexA.push_back(m_solverIndex[contact.bodyA]);
-        chunk.indexB.push_back(m_solverIndex[contact.bodyB]);
-        chunk.friction.push_back(contact.friction);
-        chunk.restitution.push_back(contact.restitution);
+        scratch.indexA.push_back(m_solverIndex[contact.bodyA]);
+        scratch.indexB.push_back(m_solverIndex[contact.bodyB]);
+        scratch.friction.push_back(contact.friction);
+        scratch.restitution.push_back(contact.restitution);
     }
 
     // Velocities between the body state and the solver's copy, for the group's bodies first..last-1.
@@ -607,10 +607,10 @@ void World::solveChunk(SolveChunk& chunk, int substeps) {
     toSolver(0, group.size());
     ContactSolverSettings settings = m_solverSettings;
     settings.contactHertz = 0.25 * m_fps * substeps; // a quarter of the substep rate (see ContactSolverSettings)
-    ContactSolver& solver = chunk.solver;
+    ContactSolver& solver = scratch.solver;
     solver.resetCounters();
-    solver.prepare(chunk.manifolds, chunk.indexA, chunk.indexB, chunk.friction, chunk.restitution, bodies,
-                   chunk.centers, h, settings);
+    solver.prepare(scratch.manifolds, scratch.indexA, scratch.indexB, scratch.friction, scratch.restitution, bodies,
+                   scratch.centers, h, settings);
 
     // The team solves the group together: bodies are split evenly for the integration, and each level of the
     // solver's schedule is split evenly for the contacts, with a barrier after every level. Every body sees the
@@ -619,8 +619,8 @@ void World::solveChunk(SolveChunk& chunk, int substeps) {
     // pyramid20's 590 constraints in 111 levels took 14 % longer on average on two threads than on one.
     const size_t levelWidth = solver.levelCount() > 0 ? solver.solveOrder().size() / solver.levelCount() : 0;
     const int members =
-        m_team && group.size() >= kMinBodiesPerThread && levelWidth >= kMinLevelWidth ? m_team->size() : 1;
-    chunk.clamps.resize(static_cast<size_t>(std::max(members, 1)));
+        m_team && group.size() >= kMinBodiesForTeam && levelWidth >= kMinLevelWidth ? m_team->size() : 1;
+    scratch.clamps.resize(static_cast<size_t>(members));
     const bool timed = members == 1; // the per-stage timers are not thread safe: then the whole solve counts
     std::optional<StageTimer> solveTimer;
     if (!timed)
@@ -652,7 +652,7 @@ void World::solveChunk(SolveChunk& chunk, int substeps) {
         };
         for (int s = 0; s < substeps; ++s) {
             timer(Stage::IntegrateVelocities);
-            integrateVelocities(m_state, mine, h, m_gravity, m_damping, m_integrator, rotation, chunk.clamps[member]);
+            integrateVelocities(m_state, mine, h, m_gravity, m_damping, m_integrator, rotation, scratch.clamps[member]);
             toSolver(first, last);
             if (members == 1) {
                 timer(Stage::WarmStart);
@@ -709,9 +709,9 @@ void World::solveChunk(SolveChunk& chunk, int substeps) {
         solver.applyRestitution(bodies);
         fromSolver(0, group.size());
     }
-    solver.storeImpulses(chunk.manifolds);
-    for (size_t k = 0; k < chunk.activeContacts.size(); ++k)
-        m_contactPool[chunk.activeContacts[k]].manifold = chunk.manifolds[k];
+    solver.storeImpulses(scratch.manifolds);
+    for (size_t k = 0; k < scratch.activeContacts.size(); ++k)
+        m_contactPool[scratch.activeContacts[k]].manifold = scratch.manifolds[k];
     for (uint32_t i : group)
         m_solverIndex[i] = 0;
 }

@@ -163,21 +163,22 @@ private:
     void solve();
     void solveGroup(std::span<const uint32_t> group, int refinement);
     // The solver and scratch of the group being solved.
-    struct SolveChunk {
+    struct SolveScratch {
         std::vector<uint32_t> bodies;
         ContactSolver solver;
         std::vector<SolverBody> solverBodies;
         std::vector<Vec3> centers;
-        std::vector<uint32_t> activeContacts, indexA, indexB; // pool slots of the chunk's contacts; solver indices
+        std::vector<uint32_t> activeContacts, indexA, indexB; // pool slots of the group's contacts; solver indices
         std::vector<Manifold> manifolds;
         std::vector<Real> friction, restitution;
         std::vector<ClampCounters> clamps; // per member of the team
         void clearContacts();
     };
-    void solveChunk(SolveChunk& chunk, int substeps);
+    // The group of m_scratch through `substeps` substeps, then restitution.
+    void solveSubsteps(int substeps);
     // A group is solved by the whole team only from this many bodies on, and with at least this many constraints
     // per level of the solver's schedule on average (ramps.obj's pile: 37; the 5,050-cube pyramid: 25).
-    static constexpr size_t kMinBodiesPerThread = 128;
+    static constexpr size_t kMinBodiesForTeam = 128;
     static constexpr size_t kMinLevelWidth = 16;
     int substepRefinement(Real massRatio) const;
     void continuousCollision();
@@ -193,8 +194,7 @@ private:
     Integrator m_integrator = Integrator::SymplecticEuler;
     Vec3 m_gravity{0.0};
     Damping m_damping;
-    int m_threads = 1;
-    // Worker threads of the narrowphase and the solve when m_threads > 1.
+    // Threads of the narrowphase and the solve (WorldOptions::threads); none for one thread.
     std::unique_ptr<ThreadTeam> m_team;
     WorldTuning m_tuning;
     EffectsDecision m_effects;
@@ -232,7 +232,7 @@ private:
     std::vector<uint8_t> m_refinement; // per body: its island's substep multiplier this step, 0 when not moving
     std::vector<Real> m_islandMinMass, m_islandMaxMass;
     std::vector<uint32_t> m_narrowActive, m_solverIndex, m_moving;
-    SolveChunk m_chunk;
+    SolveScratch m_scratch;
     ContactSolverCounters m_solverCounters;
     std::vector<Vec3> m_stepStartPosition;
     std::vector<Quat> m_stepStartOrientation;

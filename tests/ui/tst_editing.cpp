@@ -7,6 +7,7 @@
 #include "edit/EditController.h"
 #include "outliner/OutlinerModel.h"
 #include "ui/GuiTestSetup.h"
+#include "ui/Screenshot.h"
 #include "viewport/ScenePresenter.h"
 #include "viewport/Viewport.h"
 
@@ -572,7 +573,7 @@ void TestEditing::statusBarShowsCountsSelectionAndFrameTime() {
     QVERIFY(refresh().contains(QStringLiteral("1 anchor")));
     m_window->setSelectedBodies({2});
     QVERIFY2(refresh().contains(QStringLiteral("Crate.001")), qPrintable(texts.join('|')));
-    viewport()->update();
+    viewport()->requestRender();
     QTRY_VERIFY2(refresh().contains(QStringLiteral(" ms")), qPrintable(texts.join('|')));
     action("AddCubeAction")->trigger();
     QVERIFY2(refresh().contains(QStringLiteral("4 bodies")), qPrintable(texts.join('|')));
@@ -586,12 +587,12 @@ void TestEditing::windowScreenshotWithGizmo() {
     viewport()->camera().zoom(2.5f);
     viewport()->setTool(rl::GizmoTool::Rotate);
     QTRY_VERIFY(viewport()->gizmoHandlePosition(rl::GizmoHandle::RotateX));
-    m_window->grab().save(QDir::tempPath() + QStringLiteral("/rl_editing_rotate.png"));
+    rl::test::screenshot(*m_window).save(QDir::tempPath() + QStringLiteral("/rl_editing_rotate.png"));
     viewport()->setTool(rl::GizmoTool::Move);
     const QPointF handle = *viewport()->gizmoHandlePosition(rl::GizmoHandle::MoveX);
     sendMouse(viewport(), QEvent::MouseButtonPress, handle, Qt::LeftButton, Qt::LeftButton);
     sendMouse(viewport(), QEvent::MouseMove, handle + QPointF(60, 10), Qt::NoButton, Qt::LeftButton);
-    const QImage during = m_window->grab().toImage();
+    const QImage during = rl::test::screenshot(*m_window);
     during.save(QDir::tempPath() + QStringLiteral("/rl_editing_drag.png"));
     sendMouse(viewport(), QEvent::MouseButtonRelease, handle + QPointF(60, 10), Qt::LeftButton, Qt::NoButton);
     QCOMPARE(document()->undoStack()->count(), 1);

@@ -6,6 +6,7 @@
 #include "scene/BodyProperties.h"
 #include "scene/SceneLibrary.h"
 #include "ui/GuiTestSetup.h"
+#include "ui/Screenshot.h"
 #include "viewport/Viewport.h"
 
 #include <QAction>
@@ -466,10 +467,10 @@ private slots:
         QVERIFY(child<QLabel>(window, "InspectorComputedMass")->text().contains(QStringLiteral("kg")));
         QCOMPARE(child<QLabel>(window, "InspectorHull")->text(), QStringLiteral("8")); // a cube's corners
         const QString path = QDir::tempPath() + "/rigidlab-inspector.png";
-        QVERIFY(window.grab().save(path));
+        QVERIFY(rl::test::screenshot(window).save(path));
         window.setSelectedBodies({0, 1});
         QTest::qWait(50);
-        QVERIFY(window.grab().save(QDir::tempPath() + "/rigidlab-inspector-multi.png"));
+        QVERIFY(rl::test::screenshot(window).save(QDir::tempPath() + "/rigidlab-inspector-multi.png"));
     }
 };
 

@@ -11,6 +11,7 @@
 #include "materials/MaterialsWidget.h"
 #include "settings/SettingsController.h"
 #include "ui/GuiTestSetup.h"
+#include "ui/Screenshot.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -444,7 +445,7 @@ private slots:
         materials->setCurrentMaterial("Steel");
         child<QDoubleSpinBox>(materials, "MaterialRestitution")->setValue(0.7);
         QTest::qWait(50);
-        QVERIFY(window.grab().save(QDir::tempPath() + "/rigidlab-materials.png"));
+        QVERIFY(rl::test::screenshot(window).save(QDir::tempPath() + "/rigidlab-materials.png"));
         QVERIFY(window.settings()->materialsDock()->grab().save(QDir::tempPath() + "/rigidlab-materials-dock.png"));
         child<QTabWidget>(materials, "MaterialsTabs")->setCurrentIndex(1);
         QTest::qWait(50);

@@ -7,6 +7,7 @@
 #include "overlays/OverlayPainter.h"
 #include "overlays/OverlayProjection.h"
 #include "ui/GuiTestSetup.h"
+#include "ui/Screenshot.h"
 #include "viewport/Camera.h"
 #include "viewport/ScenePresenter.h"
 #include "viewport/Viewport.h"
@@ -674,7 +675,7 @@ private slots:
             w.viewport()->setTransforms(models);
             overlays->setFrame(frame);
         }
-        const QImage image = w.window.grab().toImage();
+        const QImage image = rl::test::screenshot(w.window);
         QVERIFY(!image.isNull());
         const QString path = QDir::tempPath() + "/rigidlab_overlays.png";
         QVERIFY(image.save(path));

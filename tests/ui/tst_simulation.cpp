@@ -443,7 +443,7 @@ private slots:
         // Repaints while the bake goes on (an llvmpipe frame of 200 boxes takes ~100 ms of this thread).
         rendered.clear();
         for (int k = 0; k < 3; ++k) {
-            window.viewport()->update();
+            window.viewport()->requestRender();
             QVERIFY(rendered.wait(10000) || !rendered.isEmpty());
         }
         sim->cancelBake();

@@ -6,6 +6,7 @@
 #include "scene/SceneLibrary.h"
 #include "settings/SettingsController.h"
 #include "ui/GuiTestSetup.h"
+#include "ui/Screenshot.h"
 #include "world/WorldSettingsWidget.h"
 
 #include <QCheckBox>
@@ -321,7 +322,7 @@ private slots:
         ccd->setCurrentIndex(2);
         emit ccd->activated(2);
         QTRY_VERIFY_WITH_TIMEOUT(status(window, "sleeping").contains("Auto: on"), 20000);
-        QVERIFY(window.grab().save(QDir::tempPath() + "/rigidlab-world.png"));
+        QVERIFY(rl::test::screenshot(window).save(QDir::tempPath() + "/rigidlab-world.png"));
         QVERIFY(window.settings()->worldDock()->grab().save(QDir::tempPath() + "/rigidlab-world-dock.png"));
         QVERIFY(
             child<QWidget>(world, "WorldSettingsContent")->grab().save(QDir::tempPath() + "/rigidlab-world-all.png"));

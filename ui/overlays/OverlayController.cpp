@@ -81,7 +81,7 @@ OverlayController::OverlayController(MainWindow* window) : QObject(window), m_wi
     m_menu->addAction(m_legendAction);
     connect(m_legendAction, &QAction::toggled, this, [this](bool on) {
         QSettings().setValue(kLegendKey, on);
-        m_window->viewport()->update();
+        m_window->viewport()->requestRender();
     });
 
     for (int k = 0; k < KindCount; ++k)
@@ -94,7 +94,7 @@ OverlayController::OverlayController(MainWindow* window) : QObject(window), m_wi
     });
     connect(window, &MainWindow::selectionChanged, this, [this] {
         if (m_enabled[Trails] && m_painterInstalled)
-            m_window->viewport()->update();
+            m_window->viewport()->requestRender();
     });
 }
 
@@ -141,7 +141,7 @@ void OverlayController::setTrailSource(std::shared_ptr<const Bake> bake) {
     if (m_enabled[Trails] && m_hasFrame)
         recordTrail();
     if (m_painterInstalled)
-        m_window->viewport()->update();
+        m_window->viewport()->requestRender();
 }
 
 void OverlayController::setTrailLength(int frames) {
@@ -149,7 +149,7 @@ void OverlayController::setTrailLength(int frames) {
     while (!m_history.empty() && m_history.front().frame <= m_history.back().frame - m_trailLength)
         m_history.pop_front();
     if (m_painterInstalled)
-        m_window->viewport()->update();
+        m_window->viewport()->requestRender();
 }
 
 void OverlayController::recordTrail() {
@@ -212,7 +212,7 @@ void OverlayController::updatePainter() {
         else
             viewport->setOverlayPainter({});
     }
-    viewport->update();
+    viewport->requestRender();
 }
 
 void OverlayController::applySleeping() {

@@ -35,7 +35,7 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // Both need the widget's context current. initialize() may follow release() (a re-parented QOpenGLWidget).
+    // Both need the viewport's context current. initialize() may follow release() (a new context).
     bool initialize();
     void release();
     bool isInitialized() const { return m_initialized; }
@@ -55,8 +55,8 @@ public:
     // Blends a premultiplied image over the frame with its top-left at (x, y) device pixels: the axis indicator,
     // painted with QPainter into a QImage because QPainter on the GL widget itself costs far more per frame.
     // Each slot keeps its own texture, re-uploaded only when that slot's image cacheKey() changes: slot 0 is the
-    // owner's overlay painter, 1 the axis indicator, 2 the transform gizmo.
-    static constexpr int kOverlaySlots = 3;
+    // owner's overlay painter, 1 the axis indicator, 2 the transform gizmo, 3 the box selection's rectangle.
+    static constexpr int kOverlaySlots = 4;
     void drawOverlay(const QImage& image, int x, int y, int pixelWidth, int pixelHeight, int slot = 0);
 
     int drawCallsLastFrame() const { return m_drawCalls; }
@@ -128,6 +128,7 @@ private:
     unsigned m_batchIndexBuffer = 0;
     int m_batchClosedIndices = 0; // the closed meshes' triangles come first in the index buffer
     int m_batchOpenIndices = 0;
+
     int m_selectedInBatch = 0; // selected instances of batched meshes: many are outlined with the whole batch
     bool m_outlineWithBatch = false;
 

@@ -2,20 +2,24 @@
 
 #include "viewport/Overlays.h"
 
+#include <QCoreApplication>
 #include <QCursor>
 #include <QElapsedTimer>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
 #include <QOpenGLFunctions>
 #include <QPainter>
-#include <QRubberBand>
 #include <QSurfaceFormat>
+#include <QVBoxLayout>
 #include <QWheelEvent>
+#include <QWindow>
 
 #include <glm/gtc/constants.hpp>
 
 #include <cmath>
+#include <memory>
 
 namespace rl {
 
@@ -27,7 +31,53 @@ constexpr float kZoomPerNotch = 0.85f;
 constexpr float kZoomPerDragPixel = 1.005f; // Ctrl+middle drag: 140 px down doubles the distance
 } // namespace
 
-Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
+// The native window the frames are swapped to. It takes no focus and draws nothing itself: input goes to the
+// Viewport widget, as if the widget had received it, and expose events ask the widget for a frame.
+class ViewportWindow : public QWindow {
+public:
+    explicit ViewportWindow(Viewport* owner) : m_owner(owner) {
+        setSurfaceType(QSurface::OpenGLSurface);
+        // A press on a window that accepts focus would activate it (xcb), and keys would then bypass the widgets'
+        // focus and shortcuts. The widget takes the focus on a press instead (see event()).
+        setFlag(Qt::WindowDoesNotAcceptFocus);
+    }
+
+protected:
+    void exposeEvent(QExposeEvent*) override {
+        if (isExposed())
+            m_owner->renderNow();
+    }
+
+    bool event(QEvent* event) override {
+        switch (event->type()) {
+        case QEvent::MouseButtonPress:
+        case QEvent::MouseButtonDblClick:
+            if (m_owner->focusPolicy() & Qt::ClickFocus)
+                m_owner->setFocus(Qt::MouseFocusReason);
+            [[fallthrough]];
+        case QEvent::MouseButtonRelease:
+        case QEvent::MouseMove:
+        case QEvent::Wheel:
+        case QEvent::KeyPress:
+        case QEvent::KeyRelease:
+        case QEvent::Enter:
+        case QEvent::Leave: {
+            // The window fills the widget, so positions relative to the window are relative to the widget too.
+            std::unique_ptr<QEvent> copy(event->clone());
+            QCoreApplication::sendEvent(m_owner, copy.get());
+            event->setAccepted(copy->isAccepted());
+            return true;
+        }
+        default:
+            return QWindow::event(event);
+        }
+    }
+
+private:
+    Viewport* m_owner;
+};
+
+Viewport::Viewport(QWidget* parent) : QWidget(parent) {
     // The outline needs a stencil buffer and the shaders need 3.3 core; keep what the application asked for
     // otherwise (it should set the same as the default format before creating QApplication).
     QSurfaceFormat format = QSurfaceFormat::defaultFormat();
@@ -38,7 +88,17 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
         format.setProfile(QSurfaceFormat::CoreProfile);
     }
     format.setSamples(0);
-    setFormat(format);
+    m_window = new ViewportWindow(this);
+    m_window->setFormat(format);
+    QWidget* container = QWidget::createWindowContainer(m_window, this);
+    container->setFocusPolicy(Qt::NoFocus);
+    container->setAttribute(Qt::WA_OpaquePaintEvent);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(container);
+    // Nothing of the widget itself shows: the window covers it.
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    setAttribute(Qt::WA_NoSystemBackground);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true); // the gizmo highlights the handle under the cursor
     m_camera.setViewportSize(width(), height());
@@ -49,27 +109,92 @@ Viewport::~Viewport() {
 }
 
 void Viewport::cleanup() {
-    // Called on aboutToBeDestroyed and from the destructor: GL objects die with the context current.
+    // GL objects die with the context current.
+    if (m_renderer.isInitialized() && makeCurrent()) {
+        m_renderer.release();
+        doneCurrent();
+    }
+}
+
+bool Viewport::makeCurrent() {
+    if (m_glFailed)
+        return false;
+    if (!m_context) {
+        if (!m_window->handle())
+            m_window->create();
+        m_context = std::make_unique<QOpenGLContext>();
+        m_context->setFormat(m_window->requestedFormat());
+        if (!m_context->create()) {
+            qWarning("rl::Viewport: no OpenGL context could be created; the viewport stays empty");
+            m_context.reset();
+            m_glFailed = true;
+            return false;
+        }
+    }
+    if (!m_context->makeCurrent(m_window))
+        return false;
     if (!m_renderer.isInitialized())
-        return;
-    makeCurrent();
-    m_renderer.release();
-    doneCurrent();
+        initializeGL();
+    return true;
+}
+
+QWindow* Viewport::nativeWindow() const {
+    return m_window;
+}
+
+void Viewport::doneCurrent() {
+    if (m_context)
+        m_context->doneCurrent();
 }
 
 void Viewport::initializeGL() {
-    // The context is created again when the widget is re-parented (docking): let go of the old one first.
-    if (m_renderer.isInitialized())
-        m_renderer.release();
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::cleanup, Qt::UniqueConnection);
-    m_renderer.initialize();
-    // The renderer keeps CPU copies; hand it the scene again so that a re-created context gets everything.
+    if (!m_renderer.initialize())
+        return;
+    // The renderer keeps CPU copies; hand it the scene again so that it uploads everything.
     m_renderer.setScene(m_scene);
 }
 
-void Viewport::resizeGL(int w, int h) {
+void Viewport::requestRender() {
+    if (m_renderPending)
+        return;
+    m_renderPending = true;
+    QMetaObject::invokeMethod(this, &Viewport::renderNow, Qt::QueuedConnection);
+}
+
+void Viewport::renderNow() {
+    m_renderPending = false;
+    // A window that is not on screen is drawn when it is exposed.
+    if (!m_window->isExposed() || !makeCurrent())
+        return;
+    paintGL();
+    m_context->swapBuffers(m_window);
+    emit frameSwapped();
+}
+
+QImage Viewport::grabFramebuffer() {
+    if (!makeCurrent())
+        return {};
+    const qreal ratio = devicePixelRatioF();
+    const QSize pixels(std::max(1, static_cast<int>(std::lround(width() * ratio))),
+                       std::max(1, static_cast<int>(std::lround(height() * ratio))));
+    QOpenGLFramebufferObject target(pixels, QOpenGLFramebufferObject::CombinedDepthStencil);
+    target.bind();
+    paintGL();
+    QImage image = target.toImage(); // premultiplied ARGB, the alpha as drawn
+    target.release();
+    image.setDevicePixelRatio(ratio);
+    return image;
+}
+
+void Viewport::paintEvent(QPaintEvent*) {
+    // Qt repaints the widget when it is shown or uncovered; the window's expose draws it, this keeps it current.
+    requestRender();
+}
+
+void Viewport::resizeEvent(QResizeEvent* event) {
     // Camera works in logical pixels, as mouse events do; only the aspect matters to the projection.
     m_camera.setViewportSize(width(), height());
+    QWidget::resizeEvent(event);
 }
 
 void Viewport::paintGL() {
@@ -103,8 +228,9 @@ void Viewport::paintGL() {
             static_cast<int>(std::lround(width() * ratio)), static_cast<int>(std::lround(height() * ratio)), 1);
     }
     paintTransformGizmo();
+    paintBoxSelection();
     if (m_measureFrameTime || m_renderer.profiling())
-        context()->functions()->glFinish();
+        m_context->functions()->glFinish();
     m_overlaysMs = static_cast<double>(timer.nsecsElapsed() - sceneDone) * 1e-6;
 
     m_lastFrameMs = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
@@ -112,11 +238,46 @@ void Viewport::paintGL() {
     emit frameRendered(m_lastFrameMs);
 }
 
+void Viewport::paintBoxSelection() {
+    if (m_drag != Drag::BoxSelect)
+        return;
+    const QRect band = QRect(m_pressPosition, m_lastPosition).normalized().intersected(rect());
+    // Blender's box select: a faint fill inside a dashed outline.
+    drawPaintedOverlay(m_bandImage, band, 3, QColor(255, 255, 255, 28), [&](QPainter& painter) {
+        QPen pen(QColor(255, 255, 255, 220), 1.0, Qt::DashLine);
+        pen.setCosmetic(true);
+        painter.setPen(pen);
+        painter.drawRect(QRectF(band).adjusted(0.5, 0.5, -0.5, -0.5));
+    });
+}
+
+void Viewport::drawPaintedOverlay(QImage& image, const QRect& bounds, int slot, const QColor& fill,
+                                  const std::function<void(QPainter&)>& paint) {
+    if (bounds.isEmpty())
+        return;
+    const qreal ratio = devicePixelRatioF();
+    const QSize pixels(static_cast<int>(std::lround(bounds.width() * ratio)),
+                       static_cast<int>(std::lround(bounds.height() * ratio)));
+    if (image.size() != pixels) {
+        image = QImage(pixels, QImage::Format_RGBA8888_Premultiplied);
+        image.setDevicePixelRatio(ratio);
+    }
+    image.fill(fill);
+    {
+        QPainter painter(&image);
+        painter.translate(-bounds.topLeft()); // the painter works in widget coordinates
+        paint(painter);
+    }
+    m_renderer.drawOverlay(
+        image, static_cast<int>(std::lround(bounds.x() * ratio)), static_cast<int>(std::lround(bounds.y() * ratio)),
+        static_cast<int>(std::lround(width() * ratio)), static_cast<int>(std::lround(height() * ratio)), slot);
+}
+
 void Viewport::setOverlayPainter(OverlayPainter painter) {
     m_overlayPainter = std::move(painter);
     if (!m_overlayPainter)
         m_overlayImage = QImage();
-    update();
+    requestRender();
 }
 
 void Viewport::updateGizmoImage() {
@@ -149,7 +310,7 @@ void Viewport::setScene(ViewportScene scene) {
         m_meshBounds.push_back(mesh.bounds());
     m_renderer.setScene(m_scene);
     updateSelectionCentre();
-    update();
+    requestRender();
 }
 
 void Viewport::setTransforms(std::span<const glm::mat4> models) {
@@ -158,7 +319,7 @@ void Viewport::setTransforms(std::span<const glm::mat4> models) {
         m_scene.instances[i].model = models[i];
     m_renderer.setTransforms(models.first(count));
     updateSelectionCentre();
-    update();
+    requestRender();
 }
 
 void Viewport::setSelection(const QList<int>& instances) {
@@ -169,7 +330,7 @@ void Viewport::setSelection(const QList<int>& instances) {
             m_scene.instances[i].flags |= kInstanceSelected;
     m_renderer.setInstanceAttributes(m_scene);
     updateSelectionCentre();
-    update();
+    requestRender();
 }
 
 QList<int> Viewport::selection() const {
@@ -186,7 +347,7 @@ void Viewport::setInstanceAppearance(int instance, const glm::vec3& colour, uint
     m_scene.instances[instance].colour = colour;
     m_scene.instances[instance].flags = flags;
     m_renderer.setInstanceAttributes(m_scene);
-    update();
+    requestRender();
 }
 
 void Viewport::frameAll() {
@@ -212,29 +373,29 @@ void Viewport::frameSelection() {
 }
 
 void Viewport::setSamples(int samples) {
-    QSurfaceFormat f = format();
+    QSurfaceFormat f = m_window->requestedFormat();
     f.setSamples(samples);
-    setFormat(f);
+    m_window->setFormat(f);
 }
 
 void Viewport::setRenderOptions(const RenderOptions& options) {
     m_options = options;
-    update();
+    requestRender();
 }
 
 void Viewport::setGridVisible(bool visible) {
     m_options.grid = visible;
-    update();
+    requestRender();
 }
 
 void Viewport::setAxisGizmoVisible(bool visible) {
     m_axisGizmo = visible;
-    update();
+    requestRender();
 }
 
 void Viewport::cameraMoved() {
     emit cameraChanged();
-    update();
+    requestRender();
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {
@@ -269,7 +430,7 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
         m_drag = Drag::PendingClick;
         m_extendSelection = (mods & (Qt::ControlModifier | Qt::ShiftModifier)) != 0;
     } else {
-        QOpenGLWidget::mousePressEvent(event);
+        QWidget::mousePressEvent(event);
         return;
     }
     event->accept();
@@ -294,14 +455,11 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     case Drag::PendingClick:
         if ((position - m_pressPosition).manhattanLength() > kClickSlopPixels) {
             m_drag = Drag::BoxSelect;
-            if (!m_rubberBand)
-                m_rubberBand = new QRubberBand(QRubberBand::Rectangle, this);
-            m_rubberBand->setGeometry(QRect(m_pressPosition, position).normalized());
-            m_rubberBand->show();
+            requestRender(); // paintBoxSelection draws the rectangle from the press to m_lastPosition
         }
         break;
     case Drag::BoxSelect:
-        m_rubberBand->setGeometry(QRect(m_pressPosition, position).normalized());
+        requestRender();
         break;
     case Drag::Gizmo:
     case Drag::Modal:
@@ -312,9 +470,9 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
         const GizmoHandle hovered = layoutGizmo() ? m_gizmo.hitTest(event->position()) : GizmoHandle::None;
         if (hovered != m_hoveredHandle) {
             m_hoveredHandle = hovered;
-            update();
+            requestRender();
         }
-        QOpenGLWidget::mouseMoveEvent(event);
+        QWidget::mouseMoveEvent(event);
         return;
     }
     }
@@ -340,10 +498,10 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
         m_drag = drag; // a modal transform ends with a click, Enter or Escape
     } else if (drag == Drag::BoxSelect) {
         m_lastPosition = position;
-        m_rubberBand->hide();
+        requestRender();
         boxSelect(QRect(m_pressPosition, position).normalized(), m_extendSelection);
     } else if (drag == Drag::None) {
-        QOpenGLWidget::mouseReleaseEvent(event);
+        QWidget::mouseReleaseEvent(event);
         return;
     }
     event->accept();
@@ -397,7 +555,7 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
     }
     if (key == Qt::Key_Escape && m_drag == Drag::BoxSelect) {
         m_drag = Drag::None;
-        m_rubberBand->hide();
+        requestRender();
     } else if (key == Qt::Key_F || key == Qt::Key_Period) {
         frameSelection();
     } else if (key == Qt::Key_Home) {
@@ -415,7 +573,7 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
         m_camera.setPitch(opposite ? -half : half); // clamped just short of the pole
         cameraMoved();
     } else {
-        QOpenGLWidget::keyPressEvent(event);
+        QWidget::keyPressEvent(event);
         return;
     }
     event->accept();
@@ -427,15 +585,15 @@ void Viewport::keyReleaseEvent(QKeyEvent* event) {
         event->accept();
         return;
     }
-    QOpenGLWidget::keyReleaseEvent(event);
+    QWidget::keyReleaseEvent(event);
 }
 
 void Viewport::leaveEvent(QEvent* event) {
     if (m_hoveredHandle != GizmoHandle::None) {
         m_hoveredHandle = GizmoHandle::None;
-        update();
+        requestRender();
     }
-    QOpenGLWidget::leaveEvent(event);
+    QWidget::leaveEvent(event);
 }
 
 void Viewport::setTool(GizmoTool tool) {
@@ -446,7 +604,7 @@ void Viewport::setTool(GizmoTool tool) {
     m_tool = tool;
     m_hoveredHandle = GizmoHandle::None;
     emit toolChanged(tool);
-    update();
+    requestRender();
 }
 
 void Viewport::updateSelectionCentre() {
@@ -488,25 +646,8 @@ void Viewport::paintTransformGizmo() {
         return;
     // Painted into an image just big enough for the gizmo, so a frame uploads a few hundred kilobytes at most.
     const QRect bounds = m_gizmo.paintBounds().toAlignedRect().intersected(rect());
-    if (bounds.isEmpty())
-        return;
-    const qreal ratio = devicePixelRatioF();
-    const QSize pixels(static_cast<int>(std::lround(bounds.width() * ratio)),
-                       static_cast<int>(std::lround(bounds.height() * ratio)));
-    if (m_transformImage.size() != pixels) {
-        m_transformImage = QImage(pixels, QImage::Format_RGBA8888_Premultiplied);
-        m_transformImage.setDevicePixelRatio(ratio);
-    }
-    m_transformImage.fill(Qt::transparent);
-    {
-        QPainter painter(&m_transformImage);
-        painter.translate(-bounds.topLeft());
-        m_gizmo.paint(painter, m_hoveredHandle);
-    }
-    m_renderer.drawOverlay(m_transformImage, static_cast<int>(std::lround(bounds.x() * ratio)),
-                           static_cast<int>(std::lround(bounds.y() * ratio)),
-                           static_cast<int>(std::lround(width() * ratio)),
-                           static_cast<int>(std::lround(height() * ratio)), 2);
+    drawPaintedOverlay(m_transformImage, bounds, 2, Qt::transparent,
+                       [&](QPainter& painter) { m_gizmo.paint(painter, m_hoveredHandle); });
 }
 
 void Viewport::beginTransform() {
@@ -521,7 +662,7 @@ void Viewport::beginTransform() {
     m_transformDelta.pivot = glm::dvec3(m_selectionCentre.value_or(glm::vec3(0.0f)));
     m_hoveredHandle = GizmoHandle::None;
     emit transformStarted();
-    update();
+    requestRender();
 }
 
 void Viewport::previewTransform(const QPointF& mouse, bool snap) {
@@ -537,7 +678,7 @@ void Viewport::previewTransform(const QPointF& mouse, bool snap) {
     // The gizmo follows a move; a rotation turns about a fixed centre.
     const glm::vec3 pivot(m_transformDelta.pivot);
     m_selectionCentre = pivot + glm::vec3(m_transformDelta.translation);
-    update();
+    requestRender();
 }
 
 void Viewport::finishTransform() {
@@ -547,7 +688,7 @@ void Viewport::finishTransform() {
     m_drag = Drag::None;
     m_transformStart.clear();
     updateSelectionCentre();
-    update();
+    requestRender();
     if (!delta.isIdentity())
         emit transformFinished(instances, delta);
     else
@@ -568,7 +709,7 @@ void Viewport::cancelTransform() {
     m_drag = Drag::None;
     m_transformStart.clear();
     updateSelectionCentre();
-    update();
+    requestRender();
     emit transformCancelled();
 }
 

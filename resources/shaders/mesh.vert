@@ -4,6 +4,7 @@
 // vertices carry their instance's slot, and the instance data is read from the instance buffer as a buffer
 // texture, five RGBA32F texels per instance (the four model columns, then colour and flags).
 layout(location = 0) in vec3 aPosition;
+layout(location = 8) in vec3 aNormal; // shape coordinates; the face normal where this vertex ends a triangle
 #ifdef RL_BATCHED
 layout(location = 1) in float aSlot;
 uniform samplerBuffer uInstances;
@@ -16,8 +17,11 @@ layout(location = 6) in vec4 aColourFlags; // rgb colour, a = flags as a float (
 #endif
 
 uniform mat4 uViewProjection;
+uniform vec3 uEye;
+uniform vec3 uKeyDirection; // unit, towards the key light (it follows the camera: above, left, behind)
 
-out vec3 vWorld;
+// Lit colour of the face, taken from the triangle's last (provoking) vertex: the renderer turns every triangle to end
+// on a vertex that carries its face normal, so the whole face gets one colour (Blender's faceted look).
 flat out vec3 vColour;
 
 const uint kAnchor = 1u;
@@ -33,7 +37,6 @@ void main() {
     uint flags = uint(aColourFlags.a + 0.5);
     if ((flags & kHidden) != 0u) {
         gl_Position = vec4(0.0, 0.0, 2.0, 1.0); // outside the clip volume: the triangle is dropped
-        vWorld = vec3(0.0);
         vColour = vec3(0.0);
         return;
     }
@@ -44,7 +47,6 @@ void main() {
     mat4 model = mat4(aModel0, aModel1, aModel2, aModel3);
 #endif
     vec4 world = model * vec4(aPosition, 1.0);
-    vWorld = world.xyz;
     gl_Position = uViewProjection * world;
 
     // Anchors are a neutral grey whatever their colour so that static geometry never looks like a dynamic body.
@@ -54,5 +56,18 @@ void main() {
         colour = mix(colour, vec3(dot(colour, vec3(0.299, 0.587, 0.114))), 0.5) * 0.85;
     if ((flags & kSelected) != 0u)
         colour = mix(colour, vec3(1.0, 0.55, 0.10), 0.35);
-    vColour = colour;
+
+    // Models are rigid (rotation and translation), so the normal turns with the model's upper 3x3.
+    vec3 n = normalize(mat3(model) * aNormal);
+    // Two-sided: a flat anchor (a Blender plane) is lit from whichever side the camera sees. The triangle is
+    // planar, so the side seen from this vertex is the side seen from all of it.
+    if (dot(n, uEye - world.xyz) < 0.0)
+        n = -n;
+    // Hemisphere light: cool sky from above, warm dark bounce from below, so side faces differ from top faces.
+    vec3 sky = vec3(0.66, 0.69, 0.75);
+    vec3 ground = vec3(0.30, 0.28, 0.27);
+    vec3 hemisphere = mix(ground, sky, 0.5 + 0.5 * n.y);
+    float lambert = max(dot(n, uKeyDirection), 0.0);
+    vec3 light = 0.06 + 0.50 * hemisphere + 0.50 * lambert * vec3(1.0, 0.98, 0.95);
+    vColour = colour * light;
 }

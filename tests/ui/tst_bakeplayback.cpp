@@ -482,8 +482,9 @@ private slots:
               "process CPU %.1f ms per frame",
               kOrbits, percentile(orbitMs, 0.5), percentile(orbitMs, 0.95), orbitCpuMs);
         // No timing assert on a shared machine; what keeps a frame cheap is checked instead: 5,000 boxes of different
-        // sizes (5,000 meshes) are drawn in one batch, not one draw call each (background, batch, grid, axis).
-        QVERIFY2(viewport->drawCallsLastFrame() <= 6, qPrintable(QString::number(viewport->drawCallsLastFrame())));
+        // sizes (5,000 meshes, 60,000 triangles) are drawn from one batch, not one draw call each: background, the
+        // batch in 15 parts of at most 4,096 triangles (each flushed to llvmpipe's rasteriser), grid, axis.
+        QVERIFY2(viewport->drawCallsLastFrame() <= 20, qPrintable(QString::number(viewport->drawCallsLastFrame())));
         QVERIFY2(percentile(poseMs, 0.5) < 16.0, qPrintable(QString::number(percentile(poseMs, 0.5))));
         // A scrub draws the viewport once: nothing that the frame change triggers afterwards (read-outs, status)
         // asks for another frame. When the viewport was a QOpenGLWidget, every re-layout of the window composed

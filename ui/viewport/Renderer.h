@@ -99,6 +99,8 @@ private:
     void uploadMeshes();
     void buildBatch();
     void drawBatch(bool outlinePass);
+    // Counts the triangles drawn since the last flush and flushes once there are kTrianglesPerFlush of them.
+    void drewTriangles(size_t triangles);
     void uploadInstances(unsigned buffer, size_t& capacity, const std::vector<InstanceData>& data);
     void gatherSelection();
     void drawMeshes(QOpenGLShaderProgram& program, bool outlinePass);
@@ -128,6 +130,7 @@ private:
     unsigned m_batchIndexBuffer = 0;
     int m_batchClosedIndices = 0; // the closed meshes' triangles come first in the index buffer
     int m_batchOpenIndices = 0;
+    size_t m_trianglesSinceFlush = 0;
 
     int m_selectedInBatch = 0; // selected instances of batched meshes: many are outlined with the whole batch
     bool m_outlineWithBatch = false;

@@ -77,6 +77,46 @@ glm::mat4 instanceTransform(const glm::dvec3& position, const glm::dquat& orient
     return m * shapeFrame;
 }
 
+FlatShadedMesh flatShaded(const ViewportMesh& mesh) {
+    // Normals closer than this (about 0.8 degrees) count as one face: the halves of a quad that Blender wrote
+    // planar to six decimals share their vertex.
+    constexpr float kSameFace = 0.9999f;
+    FlatShadedMesh out;
+    out.vertices.reserve(mesh.vertices.size());
+    for (const glm::vec3& v : mesh.vertices)
+        out.vertices.push_back({v, glm::vec3(0.0f)});
+    std::vector<char> carries(mesh.vertices.size(), 0);
+    out.triangles.reserve(mesh.triangles.size());
+    for (const auto& t : mesh.triangles) {
+        if (t[0] >= mesh.vertices.size() || t[1] >= mesh.vertices.size() || t[2] >= mesh.vertices.size())
+            continue;
+        const glm::vec3& a = mesh.vertices[t[0]];
+        glm::vec3 n = glm::cross(mesh.vertices[t[1]] - a, mesh.vertices[t[2]] - a);
+        const float length = glm::length(n);
+        n = length > 0.0f ? n / length : glm::vec3(0.0f, 1.0f, 0.0f);
+        std::array<uint32_t, 3> tri = t;
+        int last = -1;
+        for (int k = 0; k < 3 && last < 0; ++k)
+            if (carries[tri[k]] && glm::dot(out.vertices[tri[k]].normal, n) > kSameFace)
+                last = k;
+        for (int k = 0; k < 3 && last < 0; ++k)
+            if (!carries[tri[k]]) {
+                carries[tri[k]] = 1;
+                out.vertices[tri[k]].normal = n;
+                last = k;
+            }
+        if (last < 0) {
+            out.vertices.push_back({mesh.vertices[tri[2]], n});
+            carries.push_back(1);
+            tri[2] = static_cast<uint32_t>(out.vertices.size() - 1);
+            last = 2;
+        }
+        // A rotation keeps the winding.
+        out.triangles.push_back({tri[(last + 1) % 3], tri[(last + 2) % 3], tri[last]});
+    }
+    return out;
+}
+
 ViewportMesh makeViewportBoxMesh(const glm::vec3& h) {
     ViewportMesh mesh;
     for (int corner = 0; corner < 8; ++corner)

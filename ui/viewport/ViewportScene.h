@@ -46,6 +46,20 @@ struct ViewportScene {
     int pickBounds(const ViewRay& ray) const;
 };
 
+// Faceted shading without a vertex per face corner. A flat shader input comes from a triangle's last vertex (GL's
+// provoking vertex), so every triangle is turned (its winding kept) to end on a vertex that carries the triangle's
+// normal, and the vertex shader lights the face once there. A vertex carries one normal: a triangle whose three
+// vertices already carry other normals ends on a copy of one of them. A box keeps its 8 vertices.
+struct FlatShadedVertex {
+    glm::vec3 position;
+    glm::vec3 normal; // unit; the normal of the triangles that end on this vertex
+};
+struct FlatShadedMesh {
+    std::vector<FlatShadedVertex> vertices;
+    std::vector<std::array<uint32_t, 3>> triangles; // the mesh's triangles in order, each ending on its normal
+};
+FlatShadedMesh flatShaded(const ViewportMesh& mesh);
+
 // Model matrix of a body: translate(position) * rotate(orientation) * shapeFrame. The shape frame places the mesh's
 // coordinates in body coordinates (identity when the mesh is already in shape coordinates).
 glm::mat4 instanceTransform(const glm::dvec3& position, const glm::dquat& orientation,

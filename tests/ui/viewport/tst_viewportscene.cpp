@@ -27,11 +27,15 @@ void verifyClosedAndOutward(const rl::ViewportMesh& mesh, float expectedVolume, 
 
 } // namespace
 
+Q_DECLARE_METATYPE(rl::ViewportMesh)
+
 class TestViewportScene : public QObject {
     Q_OBJECT
 private slots:
     void boxMeshIsClosedAndOutward();
     void sphereMeshIsClosedAndOutward();
+    void flatShadingEndsEveryTriangleOnItsNormal_data();
+    void flatShadingEndsEveryTriangleOnItsNormal();
     void instanceTransformAppliesShapeFrameThenRotationThenPosition();
     void instanceBoundsFollowTheModel();
     void sceneBoundsSkipHiddenAndCanTakeTheSelection();
@@ -55,6 +59,54 @@ void TestViewportScene::sphereMeshIsClosedAndOutward() {
     verifyClosedAndOutward(sphere, 4.18879f, 0.05f * 4.18879f);
     for (const glm::vec3& v : sphere.vertices)
         QVERIFY(std::abs(glm::length(v) - 1.0f) < 1e-5f);
+}
+
+void TestViewportScene::flatShadingEndsEveryTriangleOnItsNormal_data() {
+    QTest::addColumn<rl::ViewportMesh>("mesh");
+    QTest::addColumn<int>("expectedVertices"); // -1: not checked
+    QTest::newRow("box") << rl::makeViewportBoxMesh(glm::vec3(0.5f, 1.0f, 2.0f)) << 8;
+    // 16 x 8 sphere: 114 vertices for 224 triangles in 128 faces (the quads' halves are coplanar), so copies.
+    QTest::newRow("sphere") << rl::makeViewportSphereMesh(1.0f, 16, 8) << -1;
+    rl::ViewportMesh bad = rl::makeViewportBoxMesh(glm::vec3(1.0f));
+    bad.triangles.push_back({0, 1, 99}); // an index out of range is dropped, not read
+    QTest::newRow("bad index") << bad << 8;
+}
+
+// flatShaded(): the same triangles (same corners, same winding), each ending on a vertex whose normal is the
+// triangle's own, with as few copies as the greedy assignment needs.
+void TestViewportScene::flatShadingEndsEveryTriangleOnItsNormal() {
+    QFETCH(rl::ViewportMesh, mesh);
+    QFETCH(int, expectedVertices);
+    const rl::FlatShadedMesh flat = rl::flatShaded(mesh);
+    size_t valid = 0;
+    for (const auto& t : mesh.triangles)
+        valid += t[0] < mesh.vertices.size() && t[1] < mesh.vertices.size() && t[2] < mesh.vertices.size();
+    QCOMPARE(flat.triangles.size(), valid);
+    for (size_t i = 0; i < flat.triangles.size(); ++i) {
+        const auto& in = mesh.triangles[i];
+        const auto& out = flat.triangles[i];
+        const glm::vec3 a = flat.vertices[out[0]].position, b = flat.vertices[out[1]].position,
+                        c = flat.vertices[out[2]].position;
+        const glm::vec3 normal = glm::normalize(glm::cross(b - a, c - a));
+        // The last vertex carries the normal of this triangle, wound as the input was (a rotation of it).
+        QVERIFY2(glm::dot(flat.vertices[out[2]].normal, normal) > 0.9999f, qPrintable(QString::number(i)));
+        const glm::vec3 inNormal = glm::normalize(
+            glm::cross(mesh.vertices[in[1]] - mesh.vertices[in[0]], mesh.vertices[in[2]] - mesh.vertices[in[0]]));
+        QVERIFY(glm::dot(inNormal, normal) > 0.9999f);
+        bool sameCorners = false;
+        for (int r = 0; r < 3; ++r)
+            sameCorners = sameCorners || (flat.vertices[out[0]].position == mesh.vertices[in[r]] &&
+                                          flat.vertices[out[1]].position == mesh.vertices[in[(r + 1) % 3]] &&
+                                          flat.vertices[out[2]].position == mesh.vertices[in[(r + 2) % 3]]);
+        QVERIFY(sameCorners);
+    }
+    QVERIFY(flat.vertices.size() >= mesh.vertices.size());
+    if (expectedVertices >= 0)
+        QCOMPARE(flat.vertices.size(), size_t(expectedVertices));
+    else
+        QVERIFY(flat.vertices.size() > mesh.vertices.size());
+    qInfo("%zu vertices for %zu triangles (the mesh has %zu vertices)", flat.vertices.size(), flat.triangles.size(),
+          mesh.vertices.size());
 }
 
 void TestViewportScene::instanceTransformAppliesShapeFrameThenRotationThenPosition() {

@@ -19,6 +19,7 @@ layout(location = 6) in vec4 aColourFlags; // rgb colour, a = flags as a float (
 uniform mat4 uViewProjection;
 uniform vec3 uEye;
 uniform vec3 uKeyDirection; // unit, towards the key light (it follows the camera: above, left, behind)
+uniform int uLayer;         // 0: every body; 1: anchors only (the static layer); 2: all but the anchors
 
 // Lit colour of the face, taken from the triangle's last (provoking) vertex: the renderer turns every triangle to end
 // on a vertex that carries its face normal, so the whole face gets one colour (Blender's faceted look).
@@ -35,7 +36,8 @@ void main() {
     vec4 aColourFlags = texelFetch(uInstances, base + 4);
 #endif
     uint flags = uint(aColourFlags.a + 0.5);
-    if ((flags & kHidden) != 0u) {
+    bool anchor = (flags & kAnchor) != 0u;
+    if ((flags & kHidden) != 0u || (uLayer == 1 && !anchor) || (uLayer == 2 && anchor)) {
         gl_Position = vec4(0.0, 0.0, 2.0, 1.0); // outside the clip volume: the triangle is dropped
         vColour = vec3(0.0);
         return;
@@ -50,7 +52,7 @@ void main() {
     gl_Position = uViewProjection * world;
 
     // Anchors are a neutral grey whatever their colour so that static geometry never looks like a dynamic body.
-    vec3 colour = (flags & kAnchor) != 0u ? vec3(0.50, 0.50, 0.52) : aColourFlags.rgb;
+    vec3 colour = anchor ? vec3(0.50, 0.50, 0.52) : aColourFlags.rgb;
     // Sleeping bodies are washed out a little; selected ones take an orange tint on top of the outline.
     if ((flags & kSleeping) != 0u)
         colour = mix(colour, vec3(dot(colour, vec3(0.299, 0.587, 0.114))), 0.5) * 0.85;

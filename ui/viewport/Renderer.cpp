@@ -170,6 +170,7 @@ void Renderer::release() {
     if (!m_initialized)
         return;
     releaseMeshes();
+    releaseStaticLayer();
     glDeleteBuffers(1, &m_instanceBuffer);
     glDeleteTextures(1, &m_instanceTexture);
     m_instanceTexture = 0;
@@ -211,6 +212,7 @@ void Renderer::releaseMeshes() {
 }
 
 void Renderer::setScene(const ViewportScene& scene) {
+    anchorsChanged();
     m_meshes = scene.meshes;
     m_ranges.assign(m_meshes.size(), MeshRange{});
     for (size_t m = 0; m < m_meshes.size(); ++m) {
@@ -257,8 +259,15 @@ void Renderer::setInstanceAttributes(const ViewportScene& scene) {
         if (slot < 0)
             continue;
         const ViewportInstance& inst = scene.instances[i];
-        m_instances[slot].model = inst.model;
-        m_instances[slot].colourFlags = glm::vec4(inst.colour, static_cast<float>(inst.flags));
+        InstanceData& data = m_instances[slot];
+        const glm::vec4 colourFlags(inst.colour, static_cast<float>(inst.flags));
+        // An anchor that changes, or a body that becomes or stops being one, changes the static layer.
+        const bool wasAnchor = static_cast<uint32_t>(data.colourFlags.a) & kInstanceAnchor;
+        if ((wasAnchor || (inst.flags & kInstanceAnchor)) &&
+            (data.model != inst.model || data.colourFlags != colourFlags))
+            anchorsChanged();
+        data.model = inst.model;
+        data.colourFlags = colourFlags;
     }
     m_instancesDirty = true;
     gatherSelection();
@@ -291,8 +300,12 @@ void Renderer::setTransforms(std::span<const glm::mat4> models) {
     const size_t count = std::min(models.size(), m_slotOfInstance.size());
     for (size_t i = 0; i < count; ++i) {
         const int slot = m_slotOfInstance[i];
-        if (slot >= 0)
-            m_instances[slot].model = models[i];
+        if (slot < 0)
+            continue;
+        InstanceData& data = m_instances[slot];
+        if ((static_cast<uint32_t>(data.colourFlags.a) & kInstanceAnchor) && data.model != models[i])
+            anchorsChanged();
+        data.model = models[i];
     }
     m_instancesDirty = true;
     for (size_t k = 0; k < m_selectedSlots.size(); ++k)
@@ -306,6 +319,8 @@ void Renderer::setInstanceTransforms(const ViewportScene& scene, std::span<const
             continue;
         const int slot = m_slotOfInstance[i];
         if (slot >= 0) {
+            if (static_cast<uint32_t>(m_instances[slot].colourFlags.a) & kInstanceAnchor)
+                anchorsChanged();
             m_instances[slot].model = scene.instances[i].model;
             m_partialFirst = std::min(m_partialFirst, slot);
             m_partialLast = std::max(m_partialLast, slot);
@@ -512,6 +527,116 @@ void Renderer::drawMeshes(QOpenGLShaderProgram& program, bool outlinePass) {
     glDisable(GL_CULL_FACE);
 }
 
+void Renderer::drawBodies(const glm::mat4& viewProjection, const glm::vec3& eye, const glm::vec3& light, int layer) {
+    for (QOpenGLShaderProgram* program : {m_meshProgram.get(), m_batchProgram.get()}) {
+        program->bind();
+        setUniform(*program, "uViewProjection", viewProjection);
+        setUniform(*program, "uEye", eye);
+        setUniform(*program, "uKeyDirection", light);
+        program->setUniformValue("uLayer", layer);
+        if (program == m_batchProgram.get())
+            drawBatch(false);
+        else
+            drawMeshes(*program, false);
+    }
+}
+
+void Renderer::drawStaticLayer(const Camera& camera, const StaticKey& key, const RenderOptions& options,
+                               const glm::vec3& light, const std::function<void(Phase)>& endPhase) {
+    // No colour clear: the background covers every pixel.
+    glClearDepthf(1.0f);
+    glClearStencil(0);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    endPhase(Clear);
+
+    // Background gradient, behind everything and without touching depth.
+    glDisable(GL_DEPTH_TEST);
+    m_backgroundProgram->bind();
+    setUniform(*m_backgroundProgram, "uTop", options.backgroundTop);
+    setUniform(*m_backgroundProgram, "uBottom", options.backgroundBottom);
+    glBindVertexArray(m_emptyVao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    ++m_drawCalls;
+    // The rasteriser paints the background while this thread shades the bodies' vertices.
+    glFlush();
+    m_trianglesSinceFlush = 0;
+    endPhase(Background);
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    drawBodies(key.viewProjection, key.eye, light, 1);
+    endPhase(Bodies);
+
+    // Ground grid: blended, depth-tested but not written, and pulled slightly forward so that it shows on a floor
+    // whose top face lies in the plane y = 0.
+    if (options.grid) {
+        glEnable(GL_BLEND);
+        // The destination alpha stays 1: a grabbed frame keeps its alpha, and a grid line must not turn it
+        // translucent.
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_LEQUAL);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(-1.0f, -4.0f);
+        const float fadeDistance = std::max(25.0f, 6.0f * camera.distance());
+        m_gridProgram->bind();
+        setUniform(*m_gridProgram, "uViewProjection", key.viewProjection);
+        setUniform(*m_gridProgram, "uEye", key.eye);
+        m_gridProgram->setUniformValue("uFadeDistance", fadeDistance);
+        m_gridProgram->setUniformValue("uCentre", QVector2D(key.eye.x, key.eye.z));
+        m_gridProgram->setUniformValue("uExtent", fadeDistance);
+        glBindVertexArray(m_emptyVao);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        ++m_drawCalls;
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+    }
+    endPhase(Grid);
+}
+
+bool Renderer::buildStaticLayer(const Camera& camera, const StaticKey& key, const RenderOptions& options,
+                                const glm::vec3& light, const std::function<void(Phase)>& endPhase) {
+    GLint target = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    if (!m_staticFbo || m_staticKey.width != key.width || m_staticKey.height != key.height) {
+        releaseStaticLayer();
+        glGenFramebuffers(1, &m_staticFbo);
+        glGenRenderbuffers(1, &m_staticColour);
+        glGenRenderbuffers(1, &m_staticDepth);
+        glBindRenderbuffer(GL_RENDERBUFFER, m_staticColour);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, key.width, key.height);
+        glBindRenderbuffer(GL_RENDERBUFFER, m_staticDepth);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, key.width, key.height);
+        glBindRenderbuffer(GL_RENDERBUFFER, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, m_staticFbo);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_staticColour);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, m_staticDepth);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+            releaseStaticLayer();
+            m_staticSupported = false;
+            return false;
+        }
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, m_staticFbo);
+    drawStaticLayer(camera, key, options, light, endPhase);
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+    m_staticKey = key;
+    m_staticValid = true;
+    ++m_staticBuilds;
+    return true;
+}
+
+void Renderer::releaseStaticLayer() {
+    // Names of 0 are ignored by glDelete*.
+    glDeleteFramebuffers(1, &m_staticFbo);
+    const unsigned renderbuffers[] = {m_staticColour, m_staticDepth};
+    glDeleteRenderbuffers(2, renderbuffers);
+    m_staticFbo = m_staticColour = m_staticDepth = 0;
+    m_staticValid = false;
+}
+
 void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, const RenderOptions& options) {
     m_drawCalls = 0;
     if (!m_initialized)
@@ -520,13 +645,14 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     phaseTimer.start();
     double phaseCpuStart = processCpuMs();
     // Profiling only: finish the GL work of the phase that just ended and book its wall and CPU time.
-    auto endPhase = [&](Phase phase) {
+    // A phase may come more than once in a frame (the anchors and the moving bodies): its times add up.
+    const std::function<void(Phase)> endPhase = [&](Phase phase) {
         if (!m_profiling)
             return;
         glFinish();
-        m_phaseMs[phase] = static_cast<double>(phaseTimer.nsecsElapsed()) * 1e-6;
+        m_phaseMs[phase] += static_cast<double>(phaseTimer.nsecsElapsed()) * 1e-6;
         const double cpu = processCpuMs();
-        m_phaseCpuMs[phase] = cpu - phaseCpuStart;
+        m_phaseCpuMs[phase] += cpu - phaseCpuStart;
         phaseCpuStart = cpu;
         phaseTimer.restart();
     };
@@ -558,82 +684,69 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
 
     const glm::mat4 viewProjection = camera.viewProjection();
     const glm::vec3 eye = camera.eye();
+    // The key light is nearly a headlight, a little above and to the left of the camera: every face the user can
+    // see gets some of it (also from below the floor), and neighbouring faces of a box still get different shades.
+    const glm::vec3 light = glm::normalize(-camera.forward() + 0.25f * camera.up() - 0.25f * camera.right());
+
+    StaticKey key;
+    key.viewProjection = viewProjection;
+    key.eye = eye;
+    key.distance = camera.distance();
+    key.width = pixelWidth;
+    key.height = pixelHeight;
+    key.grid = options.grid;
+    key.backgroundTop = options.backgroundTop;
+    key.backgroundBottom = options.backgroundBottom;
+    key.generation = m_staticGeneration;
+    const bool sameAsLastFrame = key == m_lastFrameKey;
+    m_lastFrameKey = key;
 
     // State is set in full every frame: QPainter overlays drawn after us leave theirs behind.
+    GLint target = 0; // the framebuffer to draw into: the window's, or the one grabFramebuffer() bound
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
     glViewport(0, 0, pixelWidth, pixelHeight);
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
-    glClearColor(options.backgroundBottom.r, options.backgroundBottom.g, options.backgroundBottom.b, 1.0f);
-    glClearDepthf(1.0f);
-    glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
     glDisable(GL_CULL_FACE); // drawMeshes enables it per closed mesh
     glDisable(GL_BLEND);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_POLYGON_OFFSET_FILL);
-    endPhase(Clear);
 
-    // Background gradient, behind everything and without touching depth.
-    glDisable(GL_DEPTH_TEST);
-    m_backgroundProgram->bind();
-    setUniform(*m_backgroundProgram, "uTop", options.backgroundTop);
-    setUniform(*m_backgroundProgram, "uBottom", options.backgroundBottom);
-    glBindVertexArray(m_emptyVao);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    ++m_drawCalls;
-    // The rasteriser clears and paints the background while this thread shades the bodies' vertices.
-    glFlush();
-    m_trianglesSinceFlush = 0;
-    endPhase(Background);
+    bool cached = false;
+    if (m_staticCaching && m_staticSupported) {
+        const bool fresh = m_staticValid && key == m_staticKey;
+        if (fresh || sameAsLastFrame)
+            cached = fresh || buildStaticLayer(camera, key, options, light, endPhase);
+        if (cached) {
+            while (glGetError() != GL_NO_ERROR) {
+            }
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, m_staticFbo);
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+            glBlitFramebuffer(0, 0, pixelWidth, pixelHeight, 0, 0, pixelWidth, pixelHeight,
+                              GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);
+            glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+            if (glGetError() != GL_NO_ERROR) {
+                // The blit needs equal depth-stencil formats; a window whose buffers differ draws every frame.
+                qWarning("rl::Renderer: the static layer cannot be copied to this framebuffer; drawing it each frame");
+                m_staticSupported = false;
+                cached = false;
+            }
+        }
+        endPhase(StaticLayer);
+    }
+    m_lastFrameCached = cached;
+    if (!cached)
+        drawStaticLayer(camera, key, options, light, endPhase);
 
-    // Bodies.
+    // The moving bodies, over the static layer.
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    m_meshProgram->bind();
-    setUniform(*m_meshProgram, "uViewProjection", viewProjection);
-    setUniform(*m_meshProgram, "uEye", eye);
-    // The key light is nearly a headlight, a little above and to the left of the camera: every face the user can
-    // see gets some of it (also from below the floor), and neighbouring faces of a box still get different shades.
-    const glm::vec3 key = glm::normalize(-camera.forward() + 0.25f * camera.up() - 0.25f * camera.right());
-    setUniform(*m_meshProgram, "uKeyDirection", key);
-    drawMeshes(*m_meshProgram, false);
-    m_batchProgram->bind();
-    setUniform(*m_batchProgram, "uViewProjection", viewProjection);
-    setUniform(*m_batchProgram, "uEye", eye);
-    setUniform(*m_batchProgram, "uKeyDirection", key);
-    drawBatch(false);
+    drawBodies(viewProjection, eye, light, 2);
     endPhase(Bodies);
-
-    // Ground grid: blended, depth-tested but not written, and pulled slightly forward so that it shows on a floor
-    // whose top face lies in the plane y = 0.
-    if (options.grid) {
-        glEnable(GL_BLEND);
-        // The destination alpha stays 1: a grabbed frame keeps its alpha, and a grid line must not turn it
-        // translucent.
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-        glDepthMask(GL_FALSE);
-        glDepthFunc(GL_LEQUAL);
-        glEnable(GL_POLYGON_OFFSET_FILL);
-        glPolygonOffset(-1.0f, -4.0f);
-        const float fadeDistance = std::max(25.0f, 6.0f * camera.distance());
-        m_gridProgram->bind();
-        setUniform(*m_gridProgram, "uViewProjection", viewProjection);
-        setUniform(*m_gridProgram, "uEye", eye);
-        m_gridProgram->setUniformValue("uFadeDistance", fadeDistance);
-        m_gridProgram->setUniformValue("uCentre", QVector2D(eye.x, eye.z));
-        m_gridProgram->setUniformValue("uExtent", fadeDistance);
-        glBindVertexArray(m_emptyVao);
-        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-        ++m_drawCalls;
-        glDisable(GL_POLYGON_OFFSET_FILL);
-        glDisable(GL_BLEND);
-        glDepthMask(GL_TRUE);
-    }
-    endPhase(Grid);
 
     // Selection outline. Pass 1 marks the selected objects in the stencil; pass 2 draws them pushed outwards in
     // screen space where the stencil is clear, which leaves a ring of constant width around each silhouette.

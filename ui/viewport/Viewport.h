@@ -121,6 +121,13 @@ public:
     double phaseCpuMs(Renderer::Phase phase) const { return m_renderer.phaseCpuMs(phase); }
     double overlaysMs() const { return m_overlaysMs; }
     bool isRendererReady() const { return m_renderer.isInitialized(); }
+    // The static layer (background, anchors, grid) is drawn once and reused while it does not change (Renderer).
+    void setStaticLayerCaching(bool on) {
+        m_renderer.setStaticLayerCaching(on);
+        requestRender();
+    }
+    int staticLayerBuilds() const { return m_renderer.staticLayerBuilds(); }
+    bool lastFrameUsedStaticLayer() const { return m_renderer.lastFrameUsedStaticLayer(); }
 
     QSize minimumSizeHint() const override { return {160, 120}; }
     QSize sizeHint() const override { return {800, 600}; }

@@ -1,6 +1,7 @@
 #version 330 core
 // Faceted shading: the face was lit once, at its triangle's last vertex (mesh.vert); every pixel takes that colour.
-// Under llvmpipe the per-pixel normal from screen-space derivatives cost a third of the 5,000-box frame.
+// Under llvmpipe, drawing 5,000 boxes took 11.5-12 ms with a per-pixel normal from screen-space derivatives and
+// 7.2-9.5 ms with a flat colour (two runs each).
 flat in vec3 vColour;
 
 out vec4 fragColour;

@@ -541,8 +541,8 @@ void Renderer::drawBodies(const glm::mat4& viewProjection, const glm::vec3& eye,
     }
 }
 
-void Renderer::drawStaticLayer(const Camera& camera, const StaticKey& key, const RenderOptions& options,
-                               const glm::vec3& light, const std::function<void(Phase)>& endPhase) {
+void Renderer::drawStaticLayer(const StaticKey& key, const RenderOptions& options, const glm::vec3& light,
+                               const std::function<void(Phase)>& endPhase) {
     // No colour clear: the background covers every pixel.
     glClearDepthf(1.0f);
     glClearStencil(0);
@@ -578,7 +578,7 @@ void Renderer::drawStaticLayer(const Camera& camera, const StaticKey& key, const
         glDepthFunc(GL_LEQUAL);
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(-1.0f, -4.0f);
-        const float fadeDistance = std::max(25.0f, 6.0f * camera.distance());
+        const float fadeDistance = std::max(25.0f, 6.0f * key.distance);
         m_gridProgram->bind();
         setUniform(*m_gridProgram, "uViewProjection", key.viewProjection);
         setUniform(*m_gridProgram, "uEye", key.eye);
@@ -595,8 +595,8 @@ void Renderer::drawStaticLayer(const Camera& camera, const StaticKey& key, const
     endPhase(Grid);
 }
 
-bool Renderer::buildStaticLayer(const Camera& camera, const StaticKey& key, const RenderOptions& options,
-                                const glm::vec3& light, const std::function<void(Phase)>& endPhase) {
+bool Renderer::buildStaticLayer(const StaticKey& key, const RenderOptions& options, const glm::vec3& light,
+                                const std::function<void(Phase)>& endPhase) {
     GLint target = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
     if (!m_staticFbo || m_staticKey.width != key.width || m_staticKey.height != key.height) {
@@ -620,7 +620,7 @@ bool Renderer::buildStaticLayer(const Camera& camera, const StaticKey& key, cons
         }
     }
     glBindFramebuffer(GL_FRAMEBUFFER, m_staticFbo);
-    drawStaticLayer(camera, key, options, light, endPhase);
+    drawStaticLayer(key, options, light, endPhase);
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
     m_staticKey = key;
     m_staticValid = true;
@@ -720,9 +720,10 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     if (m_staticCaching && m_staticSupported) {
         const bool fresh = m_staticValid && key == m_staticKey;
         if (fresh || sameAsLastFrame)
-            cached = fresh || buildStaticLayer(camera, key, options, light, endPhase);
+            cached = fresh || buildStaticLayer(key, options, light, endPhase);
         if (cached) {
-            while (glGetError() != GL_NO_ERROR) {
+            for (int k = 0; k < 16 && glGetError() != GL_NO_ERROR; ++k) {
+                // earlier errors are not the copy's (bounded: a lost context keeps reporting one)
             }
             glBindFramebuffer(GL_READ_FRAMEBUFFER, m_staticFbo);
             glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
@@ -740,7 +741,7 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     }
     m_lastFrameCached = cached;
     if (!cached)
-        drawStaticLayer(camera, key, options, light, endPhase);
+        drawStaticLayer(key, options, light, endPhase);
 
     // The moving bodies, over the static layer.
     glEnable(GL_DEPTH_TEST);

@@ -136,12 +136,12 @@ private:
     // Layer 0: every body; 1: anchors only; 2: every body but the anchors (the vertex shader drops the others).
     void drawBodies(const glm::mat4& viewProjection, const glm::vec3& eye, const glm::vec3& key, int layer);
     // Clear, background, anchors and grid into the bound framebuffer.
-    void drawStaticLayer(const Camera& camera, const StaticKey& key, const RenderOptions& options,
-                         const glm::vec3& lightKey, const std::function<void(Phase)>& endPhase);
+    void drawStaticLayer(const StaticKey& key, const RenderOptions& options, const glm::vec3& lightKey,
+                         const std::function<void(Phase)>& endPhase);
     // (Re)creates the offscreen framebuffer at the key's size and draws the static layer into it; false when the
     // framebuffer cannot be made complete (the frame then draws the layer itself).
-    bool buildStaticLayer(const Camera& camera, const StaticKey& key, const RenderOptions& options,
-                          const glm::vec3& lightKey, const std::function<void(Phase)>& endPhase);
+    bool buildStaticLayer(const StaticKey& key, const RenderOptions& options, const glm::vec3& lightKey,
+                          const std::function<void(Phase)>& endPhase);
     void releaseStaticLayer();
     // An anchor's pose or look changed: the cached layer is stale.
     void anchorsChanged() { ++m_staticGeneration; }

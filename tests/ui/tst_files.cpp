@@ -10,6 +10,7 @@
 #include "files/RecoveryStore.h"
 #include "io/SceneImport.h"
 #include "ui/GuiTestSetup.h"
+#include "viewport/Viewport.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -29,6 +30,7 @@
 #include <QTest>
 #include <QTimer>
 #include <QUrl>
+#include <QWindow>
 
 #include <cmath>
 #include <functional>
@@ -799,6 +801,33 @@ private slots:
         QCOMPARE(answerer.seen.size(), boxes);
         if (boxes)
             QVERIFY(answerer.seen[0].text.contains("not_a_scene.xyz"));
+    }
+
+    // The viewport draws into a native child window, and a drag may be delivered to that window (Qt's xcb drag
+    // sources target the deepest window under the cursor): dropping a scene there opens it all the same.
+    void dropOnTheViewportWindowOpensFiles() {
+        rl::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QWindow* native = window.viewport()->nativeWindow();
+        QVERIFY(native);
+        QMimeData mime;
+        mime.setUrls({QUrl::fromLocalFile(kScenes + "stack.obj")});
+        const QPointF at(window.viewport()->width() / 2.0, window.viewport()->height() / 2.0);
+        QDragEnterEvent enter(at.toPoint(), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(native, &enter);
+        QVERIFY(enter.isAccepted());
+        QCOMPARE(enter.dropAction(), Qt::CopyAction);
+        // As Qt sends a move after an accepted enter: accepted with the last action unless a widget refuses it.
+        QDragMoveEvent move(at.toPoint() + QPoint(5, 5), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        move.setDropAction(Qt::CopyAction);
+        move.accept();
+        QCoreApplication::sendEvent(native, &move);
+        QVERIFY(move.isAccepted());
+        QDropEvent drop(at + QPointF(5, 5), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(native, &drop);
+        QCOMPARE(window.document()->bodyCount(), 11);
+        QVERIFY2(window.windowTitle().startsWith("stack.obj"), qPrintable(window.windowTitle()));
     }
 
     // Revert to Saved: back to the saved scene through the undo stack (Redo brings the changes back), or from the

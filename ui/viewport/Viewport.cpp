@@ -4,6 +4,7 @@
 
 #include <QCoreApplication>
 #include <QCursor>
+#include <QDropEvent>
 #include <QElapsedTimer>
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -61,11 +62,20 @@ protected:
         case QEvent::KeyPress:
         case QEvent::KeyRelease:
         case QEvent::Enter:
-        case QEvent::Leave: {
+        case QEvent::Leave:
+        // A drag that the window system delivers here (Qt's own xcb drag sources target the deepest window) goes
+        // to the widgets, which pass it up to the main window: dropping a scene on the viewport opens it.
+        case QEvent::DragEnter:
+        case QEvent::DragMove:
+        case QEvent::DragLeave:
+        case QEvent::Drop: {
             // The window fills the widget, so positions relative to the window are relative to the widget too.
             std::unique_ptr<QEvent> copy(event->clone());
             QCoreApplication::sendEvent(m_owner, copy.get());
             event->setAccepted(copy->isAccepted());
+            if (event->type() == QEvent::DragEnter || event->type() == QEvent::DragMove ||
+                event->type() == QEvent::Drop)
+                static_cast<QDropEvent*>(event)->setDropAction(static_cast<QDropEvent*>(copy.get())->dropAction());
             return true;
         }
         default:

@@ -262,7 +262,7 @@ void Renderer::setInstanceAttributes(const ViewportScene& scene) {
         InstanceData& data = m_instances[slot];
         const glm::vec4 colourFlags(inst.colour, static_cast<float>(inst.flags));
         // An anchor that changes, or a body that becomes or stops being one, changes the static layer.
-        const bool wasAnchor = static_cast<uint32_t>(data.colourFlags.a) & kInstanceAnchor;
+        const bool wasAnchor = data.flags() & kInstanceAnchor;
         if ((wasAnchor || (inst.flags & kInstanceAnchor)) &&
             (data.model != inst.model || data.colourFlags != colourFlags))
             anchorsChanged();
@@ -282,7 +282,7 @@ void Renderer::gatherSelection() {
         m_selectedRanges[m].first = static_cast<int>(m_selectedSlots.size());
         const MeshRange& range = m_ranges[m];
         for (int slot = range.firstInstance; slot < range.firstInstance + range.instanceCount; ++slot) {
-            const auto flags = static_cast<uint32_t>(m_instances[slot].colourFlags.a);
+            const uint32_t flags = m_instances[slot].flags();
             if ((flags & kInstanceSelected) && !(flags & kInstanceHidden))
                 m_selectedSlots.push_back(slot);
         }
@@ -303,7 +303,7 @@ void Renderer::setTransforms(std::span<const glm::mat4> models) {
         if (slot < 0)
             continue;
         InstanceData& data = m_instances[slot];
-        if ((static_cast<uint32_t>(data.colourFlags.a) & kInstanceAnchor) && data.model != models[i])
+        if ((data.flags() & kInstanceAnchor) && data.model != models[i])
             anchorsChanged();
         data.model = models[i];
     }
@@ -319,7 +319,7 @@ void Renderer::setInstanceTransforms(const ViewportScene& scene, std::span<const
             continue;
         const int slot = m_slotOfInstance[i];
         if (slot >= 0) {
-            if (static_cast<uint32_t>(m_instances[slot].colourFlags.a) & kInstanceAnchor)
+            if (m_instances[slot].flags() & kInstanceAnchor)
                 anchorsChanged();
             m_instances[slot].model = scene.instances[i].model;
             m_partialFirst = std::min(m_partialFirst, slot);
@@ -336,10 +336,11 @@ void Renderer::setInstanceTransforms(const ViewportScene& scene, std::span<const
 void Renderer::uploadMeshes() {
     releaseMeshes();
     m_meshGl.resize(m_meshes.size());
+    std::vector<FlatShadedMesh> flatMeshes;
+    flatMeshes.reserve(m_meshes.size());
     for (size_t m = 0; m < m_meshes.size(); ++m) {
-        const ViewportMesh& mesh = m_meshes[m];
         MeshGl& gl = m_meshGl[m];
-        const FlatShadedMesh flat = flatShaded(mesh);
+        const FlatShadedMesh& flat = flatMeshes.emplace_back(flatShaded(m_meshes[m]));
         gl.indexCount = static_cast<int>(flat.triangles.size() * 3);
         glGenVertexArrays(1, &gl.vao);
         glGenBuffers(1, &gl.vertexBuffer);
@@ -364,11 +365,11 @@ void Renderer::uploadMeshes() {
         glVertexAttribDivisor(kColourFlagsLocation, 1);
     }
     glBindVertexArray(0);
-    buildBatch();
+    buildBatch(flatMeshes);
     m_meshesDirty = false;
 }
 
-void Renderer::buildBatch() {
+void Renderer::buildBatch(const std::vector<FlatShadedMesh>& flatMeshes) {
     // Vertices in shape coordinates with their instance's slot; the vertex shader takes the model matrix and the
     // colour from the instance buffer (as a buffer texture), so playback still uploads only the instances.
     struct BatchVertex {
@@ -383,7 +384,7 @@ void Renderer::buildBatch() {
         const MeshRange& range = m_ranges[m];
         if (!range.batched)
             continue;
-        const FlatShadedMesh mesh = flatShaded(m_meshes[m]);
+        const FlatShadedMesh& mesh = flatMeshes[m];
         std::vector<uint32_t>& indices = range.closed ? closedIndices : openIndices;
         for (int slot = range.firstInstance; slot < range.firstInstance + range.instanceCount; ++slot) {
             const auto base = static_cast<uint32_t>(vertices.size());
@@ -541,8 +542,7 @@ void Renderer::drawBodies(const glm::mat4& viewProjection, const glm::vec3& eye,
     }
 }
 
-void Renderer::drawStaticLayer(const StaticKey& key, const RenderOptions& options, const glm::vec3& light,
-                               const std::function<void(Phase)>& endPhase) {
+void Renderer::drawStaticLayer(const StaticKey& key, const RenderOptions& options, const glm::vec3& light) {
     // No colour clear: the background covers every pixel.
     glClearDepthf(1.0f);
     glClearStencil(0);
@@ -596,9 +596,7 @@ void Renderer::drawStaticLayer(const StaticKey& key, const RenderOptions& option
 }
 
 bool Renderer::buildStaticLayer(const StaticKey& key, const RenderOptions& options, const glm::vec3& light,
-                                const std::function<void(Phase)>& endPhase) {
-    GLint target = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+                                unsigned target) {
     if (!m_staticFbo || m_staticKey.width != key.width || m_staticKey.height != key.height) {
         releaseStaticLayer();
         glGenFramebuffers(1, &m_staticFbo);
@@ -613,15 +611,15 @@ bool Renderer::buildStaticLayer(const StaticKey& key, const RenderOptions& optio
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_staticColour);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, m_staticDepth);
         if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-            glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+            glBindFramebuffer(GL_FRAMEBUFFER, target);
             releaseStaticLayer();
             m_staticSupported = false;
             return false;
         }
     }
     glBindFramebuffer(GL_FRAMEBUFFER, m_staticFbo);
-    drawStaticLayer(key, options, light, endPhase);
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+    drawStaticLayer(key, options, light);
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
     m_staticKey = key;
     m_staticValid = true;
     ++m_staticBuilds;
@@ -637,25 +635,25 @@ void Renderer::releaseStaticLayer() {
     m_staticValid = false;
 }
 
+void Renderer::endPhase(Phase phase) {
+    if (!m_profiling)
+        return;
+    glFinish();
+    m_phaseMs[phase] += static_cast<double>(m_phaseTimer.nsecsElapsed()) * 1e-6;
+    const double cpu = processCpuMs();
+    m_phaseCpuMs[phase] += cpu - m_phaseCpuStart;
+    m_phaseCpuStart = cpu;
+    m_phaseTimer.restart();
+}
+
 void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, const RenderOptions& options) {
     m_drawCalls = 0;
     if (!m_initialized)
         return;
-    QElapsedTimer phaseTimer;
-    phaseTimer.start();
-    double phaseCpuStart = processCpuMs();
-    // Profiling only: finish the GL work of the phase that just ended and book its wall and CPU time.
-    // A phase may come more than once in a frame (the anchors and the moving bodies): its times add up.
-    const std::function<void(Phase)> endPhase = [&](Phase phase) {
-        if (!m_profiling)
-            return;
-        glFinish();
-        m_phaseMs[phase] += static_cast<double>(phaseTimer.nsecsElapsed()) * 1e-6;
-        const double cpu = processCpuMs();
-        m_phaseCpuMs[phase] += cpu - phaseCpuStart;
-        phaseCpuStart = cpu;
-        phaseTimer.restart();
-    };
+    if (m_profiling) {
+        m_phaseTimer.start();
+        m_phaseCpuStart = processCpuMs();
+    }
     std::fill(std::begin(m_phaseMs), std::end(m_phaseMs), 0.0);
     std::fill(std::begin(m_phaseCpuMs), std::end(m_phaseCpuMs), 0.0);
     if (m_meshesDirty)
@@ -720,7 +718,7 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     if (m_staticCaching && m_staticSupported) {
         const bool fresh = m_staticValid && key == m_staticKey;
         if (fresh || sameAsLastFrame)
-            cached = fresh || buildStaticLayer(key, options, light, endPhase);
+            cached = fresh || buildStaticLayer(key, options, light, static_cast<GLuint>(target));
         if (cached) {
             for (int k = 0; k < 16 && glGetError() != GL_NO_ERROR; ++k) {
                 // earlier errors are not the copy's (bounded: a lost context keeps reporting one)
@@ -741,7 +739,7 @@ void Renderer::render(const Camera& camera, int pixelWidth, int pixelHeight, con
     }
     m_lastFrameCached = cached;
     if (!cached)
-        drawStaticLayer(key, options, light, endPhase);
+        drawStaticLayer(key, options, light);
 
     // The moving bodies, over the static layer.
     glEnable(GL_DEPTH_TEST);

@@ -6,11 +6,11 @@
 #include "viewport/Camera.h"
 #include "viewport/ViewportScene.h"
 
+#include <QElapsedTimer>
 #include <QOpenGLExtraFunctions>
 
 #include <glm/glm.hpp>
 
-#include <functional>
 #include <limits>
 #include <memory>
 #include <span>
@@ -80,7 +80,6 @@ public:
     // with the same static content, so orbiting does not pay for building it. Every frame draws the layers in
     // the same order, cached or not: the grid shows over anchors and under every moving body.
     void setStaticLayerCaching(bool on) { m_staticCaching = on; }
-    bool staticLayerCaching() const { return m_staticCaching; }
     int staticLayerBuilds() const { return m_staticBuilds; }
     bool lastFrameUsedStaticLayer() const { return m_lastFrameCached; }
 
@@ -103,6 +102,7 @@ private:
     struct InstanceData {
         glm::mat4 model;
         glm::vec4 colourFlags;
+        uint32_t flags() const { return static_cast<uint32_t>(colourFlags.a); }
     };
     struct MeshRange {
         int firstInstance = 0; // into the instance buffer, which is grouped by mesh
@@ -125,7 +125,7 @@ private:
     };
 
     void uploadMeshes();
-    void buildBatch();
+    void buildBatch(const std::vector<FlatShadedMesh>& flatMeshes); // flatShaded() of each of m_meshes
     void drawBatch(bool outlinePass);
     // Counts the triangles drawn since the last flush and flushes once there are kTrianglesPerFlush of them.
     void drewTriangles(size_t triangles);
@@ -134,14 +134,15 @@ private:
     void drawMeshes(QOpenGLShaderProgram& program, bool outlinePass);
     void releaseMeshes();
     // Layer 0: every body; 1: anchors only; 2: every body but the anchors (the vertex shader drops the others).
-    void drawBodies(const glm::mat4& viewProjection, const glm::vec3& eye, const glm::vec3& key, int layer);
+    void drawBodies(const glm::mat4& viewProjection, const glm::vec3& eye, const glm::vec3& light, int layer);
     // Clear, background, anchors and grid into the bound framebuffer.
-    void drawStaticLayer(const StaticKey& key, const RenderOptions& options, const glm::vec3& lightKey,
-                         const std::function<void(Phase)>& endPhase);
-    // (Re)creates the offscreen framebuffer at the key's size and draws the static layer into it; false when the
-    // framebuffer cannot be made complete (the frame then draws the layer itself).
-    bool buildStaticLayer(const StaticKey& key, const RenderOptions& options, const glm::vec3& lightKey,
-                          const std::function<void(Phase)>& endPhase);
+    void drawStaticLayer(const StaticKey& key, const RenderOptions& options, const glm::vec3& light);
+    // (Re)creates the offscreen framebuffer at the key's size and draws the static layer into it, then binds
+    // `target` again; false when the framebuffer cannot be made complete (the frame then draws the layer itself).
+    bool buildStaticLayer(const StaticKey& key, const RenderOptions& options, const glm::vec3& light, unsigned target);
+    // Profiling only: finishes the GL work of the phase that just ended and books its wall and CPU time. A phase may
+    // come more than once in a frame (the anchors and the moving bodies): its times add up.
+    void endPhase(Phase phase);
     void releaseStaticLayer();
     // An anchor's pose or look changed: the cached layer is stale.
     void anchorsChanged() { ++m_staticGeneration; }
@@ -206,6 +207,8 @@ private:
     unsigned m_staticDepth = 0;
 
     bool m_profiling = false;
+    QElapsedTimer m_phaseTimer;
+    double m_phaseCpuStart = 0.0;
     double m_phaseMs[PhaseCount] = {};
     double m_phaseCpuMs[PhaseCount] = {};
 };

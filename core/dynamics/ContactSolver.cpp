@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace rl {
 
@@ -108,7 +109,8 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
             // Both anchors sit at the world midpoint of the witness points, in world axes at the step start.
             p.rA = mp.position - centers[c.bodyA];
             p.rB = mp.position - centers[c.bodyB];
-            p.baseSeparation = mp.separation - glm::dot(p.rB - p.rA, c.normal);
+            // The separation and the masses are rounded to float, as the batches store them (see BatchPoint).
+            p.baseSeparation = static_cast<float>(mp.separation - glm::dot(p.rB - p.rA, c.normal));
             const Vec3* directions[3] = {&c.normal, &c.tangent[0], &c.tangent[1]};
             Real masses[3];
             for (int row = 0; row < 3; ++row) {
@@ -118,7 +120,7 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
                 p.inertiaB[row] = b.invInertia * p.angularB[row];
                 const Real k = a.invMass + b.invMass + glm::dot(p.angularA[row], p.inertiaA[row]) +
                                glm::dot(p.angularB[row], p.inertiaB[row]);
-                masses[row] = k > 0.0 ? 1.0 / k : 0.0;
+                masses[row] = k > 0.0 ? static_cast<float>(1.0 / k) : 0.0;
             }
             p.normalMass = masses[0];
             p.tangentMass[0] = masses[1];
@@ -136,13 +138,14 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
         // let a ring vertex 1.9 mm up push first and bounced off spinning at 5.8 rad/s. Resting contacts keep the
         // manifold's order: reordering them by sub-millimetre differences from step to step kept a pile of 1,000
         // boxes creeping.
-        for (int k = 0; k < m.pointCount; ++k)
+        for (int k = 0; k < 4; ++k)
             c.order[k] = static_cast<uint8_t>(k);
         if (impact)
             std::stable_sort(c.order, c.order + m.pointCount,
                              [&](uint8_t l, uint8_t r) { return m.points[l].separation < m.points[r].separation; });
     }
     scheduleLevels(bodies.size());
+    buildBatches();
     m_sweepRows = {};
     for (const ContactConstraint& c : m_constraints) {
         m_sweepRows.normalRows += static_cast<uint64_t>(c.pointCount);
@@ -186,11 +189,104 @@ void ContactSolver::scheduleLevels(size_t bodyCount) {
         m_solveOrder[fill[levelOf[i]]++] = static_cast<uint32_t>(i);
 }
 
+void ContactSolver::buildBatches() {
+    m_batches.clear();
+    m_batchPoints.clear();
+    m_batchesAhead = false;
+    const size_t levels = levelCount();
+    m_batchLevelStart.assign(levels + 1, 0);
+    auto set = [](auto* lanes, const Vec3& v, int lane) {
+        for (int axis = 0; axis < 3; ++axis)
+            lanes[axis].v[lane] = static_cast<std::remove_reference_t<decltype(lanes[axis].v[0])>>(v[axis]);
+    };
+    // Within a level the order is free (its constraints share no moving body), so constraints are grouped there by
+    // their point count, and pushing ones apart from those that did not push in the last step: the lanes of a batch
+    // then have work of the same size, and a point slot in which no lane pushes skips its friction rows and warm
+    // start, as the scalar sweep skips such points.
+    auto key = [&](uint32_t index) {
+        const ContactConstraint& c = m_constraints[index];
+        bool pushing = false;
+        for (int k = 0; k < c.pointCount; ++k)
+            pushing = pushing || c.points[k].normalImpulse != 0.0;
+        return (pushing ? 0 : 8) + (4 - c.pointCount);
+    };
+    for (size_t level = 0; level < levels; ++level)
+        std::stable_sort(m_solveOrder.begin() + levelBegin(level), m_solveOrder.begin() + levelEnd(level),
+                         [&](uint32_t l, uint32_t r) { return key(l) < key(r); });
+    for (size_t level = 0; level < levels; ++level) {
+        m_batchLevelStart[level] = static_cast<uint32_t>(m_batches.size());
+        for (size_t first = levelBegin(level); first < levelEnd(level); first += 4) {
+            const size_t lanes = std::min<size_t>(4, levelEnd(level) - first);
+            Batch& batch = m_batches.emplace_back();
+            batch.firstPoint = static_cast<uint32_t>(m_batchPoints.size());
+            for (size_t l = 0; l < lanes; ++l)
+                batch.pointCount = std::max<uint32_t>(
+                    batch.pointCount, static_cast<uint32_t>(m_constraints[m_solveOrder[first + l]].pointCount));
+            m_batchPoints.resize(m_batchPoints.size() + batch.pointCount);
+            for (size_t l = 0; l < lanes; ++l) {
+                const int lane = static_cast<int>(l);
+                const uint32_t index = m_solveOrder[first + l];
+                const ContactConstraint& c = m_constraints[index];
+                batch.bodyA[l] = c.bodyA;
+                batch.bodyB[l] = c.bodyB;
+                batch.constraint[l] = index;
+                set(batch.normal, c.normal, lane);
+                set(batch.tangent[0], c.tangent[0], lane);
+                set(batch.tangent[1], c.tangent[1], lane);
+                batch.friction.v[l] = c.friction;
+                batch.approachAcceleration.v[l] = c.approachAcceleration;
+                for (int k = 0; k < c.pointCount; ++k) {
+                    const ContactConstraint::Point& p = c.points[c.order[k]];
+                    BatchPoint& q = m_batchPoints[batch.firstPoint + static_cast<uint32_t>(k)];
+                    set(q.rA, p.rA, lane);
+                    set(q.rB, p.rB, lane);
+                    q.baseSeparation.v[l] = static_cast<float>(p.baseSeparation);
+                    q.mass[0].v[l] = static_cast<float>(p.normalMass);
+                    q.mass[1].v[l] = static_cast<float>(p.tangentMass[0]);
+                    q.mass[2].v[l] = static_cast<float>(p.tangentMass[1]);
+                    q.impulse[0].v[l] = p.normalImpulse;
+                    q.impulse[1].v[l] = p.tangentImpulse[0];
+                    q.impulse[2].v[l] = p.tangentImpulse[1];
+                    q.maxNormalImpulse.v[l] = p.maxNormalImpulse;
+                    q.relativeVelocity.v[l] = p.relativeVelocity;
+                }
+            }
+        }
+    }
+    m_batchLevelStart[levels] = static_cast<uint32_t>(m_batches.size());
+}
+
+void ContactSolver::syncFromBatches() const {
+    if (!m_batchesAhead)
+        return;
+    m_batchesAhead = false;
+    for (const Batch& batch : m_batches)
+        for (int l = 0; l < 4; ++l) {
+            if (batch.constraint[l] == kNoConstraint)
+                continue;
+            ContactConstraint& c = m_constraints[batch.constraint[l]];
+            for (int k = 0; k < c.pointCount; ++k) {
+                const BatchPoint& q = m_batchPoints[batch.firstPoint + static_cast<uint32_t>(k)];
+                ContactConstraint::Point& p = c.points[c.order[k]];
+                p.normalImpulse = q.impulse[0].v[l];
+                p.tangentImpulse[0] = q.impulse[1].v[l];
+                p.tangentImpulse[1] = q.impulse[2].v[l];
+                p.maxNormalImpulse = q.maxNormalImpulse.v[l];
+                p.relativeVelocity = q.relativeVelocity.v[l];
+            }
+        }
+}
+
 void ContactSolver::warmStart(std::span<SolverBody> bodies) {
     beginSubstep();
+    if (m_settings.warmStarting)
+        warmStartBatchRange(bodies, 0, m_batches.size());
+}
+
+void ContactSolver::warmStartSequential(std::span<SolverBody> bodies) {
+    m_elapsed += m_h;
     if (!m_settings.warmStarting)
         return;
-    // Manifold order: the same result as level by level, and neighbouring constraints stay neighbours in memory.
     for (size_t i = 0; i < m_constraints.size(); ++i)
         warmStartOne(bodies, m_constraints[i]);
 }
@@ -200,7 +296,7 @@ namespace {
 template <bool kStaticA, bool kStaticB>
 void warmStartConstraint(const ContactConstraint& c, SolverBody& a, SolverBody& b) {
     for (int k = 0; k < c.pointCount; ++k) {
-        const ContactConstraint::Point& p = c.points[k];
+        const ContactConstraint::Point& p = c.points[c.order[k]]; // the batches' order
         if (p.normalImpulse == 0.0 && p.tangentImpulse[0] == 0.0 && p.tangentImpulse[1] == 0.0)
             continue; // a speculative point that never pushed: nothing to apply
         applyRowT<kStaticA, kStaticB>(a, b, p, 0, c.normal, p.normalImpulse);
@@ -221,13 +317,6 @@ void ContactSolver::warmStartOne(std::span<SolverBody> bodies, const ContactCons
         warmStartConstraint<false, true>(c, a, b);
     else
         warmStartConstraint<false, false>(c, a, b);
-}
-
-void ContactSolver::warmStartRange(std::span<SolverBody> bodies, size_t begin, size_t end) {
-    if (!m_settings.warmStarting)
-        return;
-    for (size_t n = begin; n < end; ++n)
-        warmStartOne(bodies, m_constraints[m_solveOrder[n]]);
 }
 
 namespace {
@@ -277,7 +366,7 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
     if (!settings.friction || c.friction <= 0.0)
         return;
     for (int k = 0; k < c.pointCount; ++k) {
-        ContactConstraint::Point& p = c.points[k];
+        ContactConstraint::Point& p = c.points[c.order[k]]; // the normal rows' order, as the batches
         // No normal impulse and no friction impulse (a speculative point): the clamp would give zero.
         if (p.normalImpulse == 0.0 && p.tangentImpulse[0] == 0.0 && p.tangentImpulse[1] == 0.0)
             continue;
@@ -296,8 +385,11 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
 } // namespace
 
 void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
-    // Manifold order, as in warmStart(). Level by level gave the same result but made the 5,050-cube pyramid's
-    // step 1.6 times as slow on one thread: a level's constraints are spread over the whole pile.
+    solveBatchRange(bodies, useBias, 0, m_batches.size());
+    countSweep();
+}
+
+void ContactSolver::solveSequential(std::span<SolverBody> bodies, bool useBias) {
     for (ContactConstraint& c : m_constraints)
         solveOne(bodies, c, useBias);
     countSweep();
@@ -314,11 +406,6 @@ void ContactSolver::solveOne(std::span<SolverBody> bodies, ContactConstraint& c,
         solveConstraint<false, false>(c, a, b, useBias, m_inverseH, m_elapsed, m_soft, m_settings);
 }
 
-void ContactSolver::solveRange(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end) {
-    for (size_t n = begin; n < end; ++n)
-        solveOne(bodies, m_constraints[m_solveOrder[n]], useBias);
-}
-
 void ContactSolver::countSweep() {
     m_counters.normalRows += m_sweepRows.normalRows;
     m_counters.frictionRows += m_sweepRows.frictionRows;
@@ -327,6 +414,7 @@ void ContactSolver::countSweep() {
 void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
     if (!m_settings.restitution)
         return;
+    syncFromBatches();
     const Real h = m_h;
     for (ContactConstraint& c : m_constraints) {
         if (c.restitution == 0.0)
@@ -374,6 +462,7 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
 }
 
 void ContactSolver::storeImpulses(std::span<Manifold> manifolds) const {
+    syncFromBatches();
     for (size_t i = 0; i < manifolds.size() && i < m_constraints.size(); ++i) {
         const ContactConstraint& c = m_constraints[i];
         for (int k = 0; k < c.pointCount; ++k) {

@@ -101,18 +101,41 @@ public:
     // useBias = true: the soft solve that pushes overlap apart; false: the relax pass that removes the bias velocity.
     void solve(std::span<SolverBody> bodies, bool useBias);
 
-    // The same, split up for several threads. Constraints are solved level by level (see scheduleLevels()), which
-    // gives the same result as the sequential order: positions begin..end of the solve order within one level may run
-    // on different threads at once. A substep is beginSubstep() once, then warmStartRange() over every level, then
-    // sweeps of solveRange() over every level, each sweep followed by countSweep() once.
+    // warmStart() and solve() sweep the constraints level by level (see scheduleLevels()), four at a time: the
+    // constraints of one level share no moving body, so they are packed into batches of four lanes
+    // (ContactSolverWide.cpp) whose lanes run side by side in vector registers. Every body still receives the same
+    // updates in the same order as in the sequential sweep in manifold order (warmStartSequential(),
+    // solveSequential()), so the results are the same numbers, whatever the order of the batches within a level.
+    //
+    // The same, split up for several threads: batches begin..end within one level may run on different threads at
+    // once. A substep is beginSubstep() once, then warmStartBatchRange() over every level, then sweeps of
+    // solveBatchRange() over every level, each sweep followed by countSweep() once.
     size_t levelCount() const { return m_levelStart.empty() ? 0 : m_levelStart.size() - 1; }
-    size_t levelBegin(size_t level) const { return m_levelStart[level]; }
+    size_t levelBegin(size_t level) const { return m_levelStart[level]; } // positions in solveOrder()
     size_t levelEnd(size_t level) const { return m_levelStart[level + 1]; }
+    size_t batchLevelBegin(size_t level) const { return m_batchLevelStart[level]; } // batch indices
+    size_t batchLevelEnd(size_t level) const { return m_batchLevelStart[level + 1]; }
     std::span<const uint32_t> solveOrder() const { return m_solveOrder; } // constraint indices, level by level
-    void beginSubstep() { m_elapsed += m_h; }
-    void warmStartRange(std::span<SolverBody> bodies, size_t begin, size_t end);
-    void solveRange(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
+    void beginSubstep() {
+        m_elapsed += m_h;
+        m_batchesAhead = true;
+    }
+    void warmStartBatchRange(std::span<SolverBody> bodies, size_t begin, size_t end);
+    void solveBatchRange(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
     void countSweep();
+
+    // The reference: one constraint after the other in manifold order, with scalar arithmetic. Tests compare the
+    // batched sweeps with it. Use one kind of sweep per prepare(), not both.
+    void warmStartSequential(std::span<SolverBody> bodies);
+    void solveSequential(std::span<SolverBody> bodies, bool useBias);
+
+    // Four doubles, one per lane of a batch.
+    struct alignas(32) Lanes {
+        Real v[4];
+    };
+    struct alignas(16) FloatLanes {
+        float v[4];
+    };
     // Bounces every point that approached faster than the threshold and pushed back: its normal speed becomes
     // -e times the approach speed. Both are speeds at the instant of impact. The solver's velocities are means over
     // a substep (the position update is x += v h), which under a constant relative acceleration a_n along the normal
@@ -124,18 +147,52 @@ public:
     // Writes the accumulated impulses back to the manifolds for warm starting in the next step.
     void storeImpulses(std::span<Manifold> manifolds) const;
 
-    const std::vector<ContactConstraint>& constraints() const { return m_constraints; }
+    const std::vector<ContactConstraint>& constraints() const {
+        syncFromBatches();
+        return m_constraints;
+    }
     const ContactSolverCounters& counters() const { return m_counters; }
     void resetCounters() { m_counters = {}; }
 
 private:
+    // A batch: four constraints of one level in lanes (an empty lane has bodies 0 and zero masses), with its points
+    // in m_batchPoints. Lane l's point k is its constraint's k-th point in solve order (ContactConstraint::order);
+    // lanes with fewer points carry zero points, which apply no impulse.
+    struct Batch {
+        uint32_t bodyA[4] = {0, 0, 0, 0}, bodyB[4] = {0, 0, 0, 0};
+        uint32_t constraint[4] = {kNoConstraint, kNoConstraint, kNoConstraint, kNoConstraint};
+        uint32_t firstPoint = 0, pointCount = 0;
+        Lanes normal[3], tangent[2][3];
+        Lanes friction, approachAcceleration;
+    };
+    // Only what a point cannot recompute is stored: the sweeps stream every point of the group through the cache
+    // (54k in large_pyramid) and were bound by memory when the points carried their rows' r x d and I^-1 (r x d)
+    // (1.6 kB per four lanes). Those are recomputed from the anchors and the bodies' inverse inertia, the same
+    // numbers prepare() computes for ContactConstraint::Point. The separation and masses are floats (prepare() rounds
+    // them for both kinds of sweep); anchors and impulses stay double. (Float anchors gave no measurable speed-up.)
+    struct BatchPoint {
+        Lanes rA[3], rB[3];
+        FloatLanes baseSeparation;
+        FloatLanes mass[3]; // normal, tangent 0, tangent 1
+        Lanes impulse[3];   // accumulated, likewise
+        Lanes maxNormalImpulse, relativeVelocity;
+    };
+    static constexpr uint32_t kNoConstraint = 0xffffffffu;
+
+    void buildBatches();
+    // Copies the batches' impulses and impact records back to m_constraints, if a batched sweep ran since.
+    void syncFromBatches() const;
     void scheduleLevels(size_t bodyCount);
     void warmStartOne(std::span<SolverBody> bodies, const ContactConstraint& c);
     void solveOne(std::span<SolverBody> bodies, ContactConstraint& c, bool useBias);
 
-    std::vector<ContactConstraint> m_constraints;
-    std::vector<uint32_t> m_solveOrder; // constraint indices, level by level, manifold order within a level
+    mutable std::vector<ContactConstraint> m_constraints;
+    std::vector<uint32_t> m_solveOrder; // constraint indices, level by level (grouped within a level: buildBatches())
     std::vector<uint32_t> m_levelStart; // level k: m_solveOrder[m_levelStart[k], m_levelStart[k + 1])
+    std::vector<uint32_t> m_batchLevelStart; // level k: m_batches[m_batchLevelStart[k], m_batchLevelStart[k + 1])
+    std::vector<Batch> m_batches;
+    std::vector<BatchPoint> m_batchPoints;
+    mutable bool m_batchesAhead = false; // the batches hold newer impulses than m_constraints
     ContactSolverSettings m_settings;
     Real m_inverseH = 0.0;
     Real m_h = 0.0;

@@ -634,12 +634,12 @@ void World::solveSubsteps(int substeps) {
             if (members > 1)
                 m_team->barrier();
         };
-        // One sweep of a solver pass over every level. (A team of one sweeps in manifold order instead, through
-        // ContactSolver::solve(): the same result, with better memory locality.)
+        // One sweep of a solver pass over every level, each level's batches shared out. (A team of one sweeps all
+        // batches through ContactSolver::solve(), with no barriers.)
         const auto sweep = [&](auto&& range) {
             for (size_t level = 0; level < levels; ++level) {
                 const auto [begin, end] =
-                    ThreadTeam::share(solver.levelBegin(level), solver.levelEnd(level), member, members);
+                    ThreadTeam::share(solver.batchLevelBegin(level), solver.batchLevelEnd(level), member, members);
                 range(begin, end);
                 barrier();
             }
@@ -664,9 +664,9 @@ void World::solveSubsteps(int substeps) {
                 if (member == 0)
                     solver.beginSubstep(); // read only by the solve sweeps, after the warm start's barriers
                 barrier();
-                sweep([&](size_t begin, size_t end) { solver.warmStartRange(bodies, begin, end); });
+                sweep([&](size_t begin, size_t end) { solver.warmStartBatchRange(bodies, begin, end); });
                 for (int it = 0; it < m_iterations; ++it) {
-                    sweep([&](size_t begin, size_t end) { solver.solveRange(bodies, true, begin, end); });
+                    sweep([&](size_t begin, size_t end) { solver.solveBatchRange(bodies, true, begin, end); });
                     if (member == 0)
                         solver.countSweep();
                 }
@@ -688,7 +688,7 @@ void World::solveSubsteps(int substeps) {
                     solver.solve(bodies, false);
                     continue;
                 }
-                sweep([&](size_t begin, size_t end) { solver.solveRange(bodies, false, begin, end); });
+                sweep([&](size_t begin, size_t end) { solver.solveBatchRange(bodies, false, begin, end); });
                 if (member == 0)
                     solver.countSweep();
             }

@@ -259,14 +259,15 @@ private slots:
     void projectileHeavy() {
         BAKE_OR_FAIL(b, dataPath("projectile_heavy.rlscene"));
         const int box = b.csv.byName("Box"), ball = b.csv.byName("Ball");
-        double boxLow = 1e300, ballLow = 1e300;
+        double boxLow = 1e300, ballLow = 1e300, boxFarthest = -1e300;
         for (int f = 0; f < b.csv.frames; ++f) {
             boxLow = std::min(boxLow, b.csv.at(f, box)[Y]);
             ballLow = std::min(ballLow, b.csv.at(f, ball)[Y]);
+            boxFarthest = std::max(boxFarthest, b.csv.at(f, box)[X]);
         }
         qInfo("projectile_heavy: lowest box centre %.4f m (half 0.1), lowest ball centre %.4f m (radius 0.5), box "
-              "pushed to x = %.3f m",
-              boxLow, ballLow, b.csv.at(b.csv.last(), box)[X]);
+              "pushed as far as x = %.3f m, at x = %.3f m at the end",
+              boxLow, ballLow, boxFarthest, b.csv.at(b.csv.last(), box)[X]);
         // The ball rides up over the box and, for a few frames, rests its 1,000 kg on 1 kg: the soft floor contact
         // under the box then carries the mass-ratio load while the box slides at 7 m/s. Issue 4's 1 cm (the resting
         // 1:1000 pair's threshold) is NOT met here: the box sinks 2.2 cm for a few frames (measured 2026-11-24 with
@@ -275,7 +276,8 @@ private slots:
         // This guards that figure until the solver handles it.
         QVERIFY(boxLow > 0.1 - 0.025);
         QVERIFY(ballLow > 0.5 - 0.01);
-        QVERIFY(b.csv.at(b.csv.last(), box)[X] > 3.2); // it was hit
+        // It was hit. (Where it ends is chaotic: squeezed out from under the ball, it may fly off backwards.)
+        QVERIFY(boxFarthest > 3.2);
     }
 
     // Mixed shapes (cubes, a stack, UV spheres, cylinders, cones, an icosphere, a torus, Suzanne): no NaN, nothing

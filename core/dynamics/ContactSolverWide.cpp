@@ -1,0 +1,325 @@
+// The contact solver's sweeps, four constraints at a time (see ContactSolver::solveBatches()).
+//
+// A batch holds four constraints of one level of the schedule, so its lanes share no moving body: the lanes are
+// independent, and every body receives the same updates in the same order as in the sequential sweep. Each lane
+// performs exactly the operations of the scalar rows in ContactSolver.cpp, in the same order, so the results are the
+// same numbers. The lanes are plain arrays of four doubles; the compiler turns the per-lane loops into vector
+// instructions (two SSE2 operations per line by default, one AVX operation in the x86-64-v3 clone where the CPU has
+// it). The build does not contract a * b + c into fused multiply-adds (ISO C++ mode), so both clones compute the same
+// bits, and a machine gives the same results whichever clone it picks.
+#include "dynamics/ContactSolver.h"
+
+#include <algorithm>
+#include <cstring>
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+#define RL_WIDE_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define RL_WIDE_CLONES
+#endif
+#define RL_LANES_INLINE inline __attribute__((always_inline))
+
+namespace rl {
+
+namespace {
+
+// V holds four doubles, one per lane. With GCC it is a vector type: two SSE2 instructions per operation in the
+// baseline clone, one AVX instruction in the x86-64-v3 clone. Elsewhere (the clang build of the fuzzers) it is an
+// array with per-lane loops: the same numbers, at scalar speed.
+#if defined(__GNUC__) && !defined(__clang__)
+using V = double __attribute__((vector_size(32)));
+using Mask = long __attribute__((vector_size(32)));               // what a comparison of V gives
+RL_LANES_INLINE V select(const Mask& m, const V& x, const V& y) { // m ? x : y, per lane
+    return m ? x : y;
+}
+#else
+struct V {
+    Real v[4];
+    Real& operator[](int l) { return v[l]; }
+    Real operator[](int l) const { return v[l]; }
+};
+struct Mask {
+    bool v[4];
+};
+template <class Out, class F>
+RL_LANES_INLINE Out perLane(F&& f) {
+    Out r;
+    for (int l = 0; l < 4; ++l)
+        r.v[l] = f(l);
+    return r;
+}
+RL_LANES_INLINE V operator+(const V& a, const V& b) {
+    return perLane<V>([&](int l) { return a.v[l] + b.v[l]; });
+}
+RL_LANES_INLINE V operator-(const V& a, const V& b) {
+    return perLane<V>([&](int l) { return a.v[l] - b.v[l]; });
+}
+RL_LANES_INLINE V operator*(const V& a, const V& b) {
+    return perLane<V>([&](int l) { return a.v[l] * b.v[l]; });
+}
+RL_LANES_INLINE V operator-(const V& a) {
+    return perLane<V>([&](int l) { return -a.v[l]; });
+}
+RL_LANES_INLINE Mask operator<(const V& a, const V& b) {
+    return perLane<Mask>([&](int l) { return a.v[l] < b.v[l]; });
+}
+RL_LANES_INLINE Mask operator>(const V& a, const V& b) {
+    return perLane<Mask>([&](int l) { return a.v[l] > b.v[l]; });
+}
+RL_LANES_INLINE Mask operator==(const V& a, const V& b) {
+    return perLane<Mask>([&](int l) { return a.v[l] == b.v[l]; });
+}
+RL_LANES_INLINE Mask operator&&(const Mask& a, const Mask& b) {
+    return perLane<Mask>([&](int l) { return a.v[l] && b.v[l]; });
+}
+RL_LANES_INLINE V select(const Mask& m, const V& x, const V& y) {
+    return perLane<V>([&](int l) { return m.v[l] ? x.v[l] : y.v[l]; });
+}
+#endif
+
+using Lanes = ContactSolver::Lanes;
+static_assert(sizeof(V) == sizeof(Lanes));
+
+RL_LANES_INLINE V splat(Real x) {
+    return V{x, x, x, x};
+}
+RL_LANES_INLINE V get(const Lanes& lanes) {
+    V r;
+    std::memcpy(&r, lanes.v, sizeof r);
+    return r;
+}
+RL_LANES_INLINE void put(Lanes& lanes, const V& x) {
+    std::memcpy(lanes.v, &x, sizeof x);
+}
+// Four floats widened to four doubles (exactly).
+#if defined(__GNUC__) && !defined(__clang__)
+using VF = float __attribute__((vector_size(16)));
+RL_LANES_INLINE V get(const ContactSolver::FloatLanes& lanes) {
+    VF f;
+    std::memcpy(&f, lanes.v, sizeof f);
+    return __builtin_convertvector(f, V);
+}
+#else
+RL_LANES_INLINE V get(const ContactSolver::FloatLanes& lanes) {
+    return V{lanes.v[0], lanes.v[1], lanes.v[2], lanes.v[3]};
+}
+#endif
+// Whether any lane of any of the three is not zero.
+RL_LANES_INLINE bool anyNonZero(const Lanes* three) {
+    bool any = false;
+    for (int row = 0; row < 3; ++row)
+        for (int l = 0; l < 4; ++l)
+            any = any || three[row].v[l] != 0.0;
+    return any;
+}
+// std::max(a, b): a < b ? b : a, per lane.
+RL_LANES_INLINE V maxOf(const V& a, const V& b) {
+    return select(a < b, b, a);
+}
+// std::clamp(x, lo, hi): x < lo ? lo : (hi < x ? hi : x), per lane.
+RL_LANES_INLINE V clampTo(const V& x, const V& lo, const V& hi) {
+    return select(x < lo, lo, select(hi < x, hi, x));
+}
+
+// A vector of three lanes-wide components.
+struct L3 {
+    V x, y, z;
+};
+template <class Stored>
+RL_LANES_INLINE L3 load(const Stored* c) {
+    return {get(c[0]), get(c[1]), get(c[2])};
+}
+RL_LANES_INLINE L3 operator+(const L3& a, const L3& b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+RL_LANES_INLINE L3 operator-(const L3& a, const L3& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+RL_LANES_INLINE L3 operator*(const V& s, const L3& a) {
+    return {s * a.x, s * a.y, s * a.z};
+}
+// glm::dot's order: (x x + y y) + z z.
+RL_LANES_INLINE V dot(const L3& a, const L3& b) {
+    return (a.x * b.x + a.y * b.y) + a.z * b.z;
+}
+// glm::cross's order.
+RL_LANES_INLINE L3 cross(const L3& x, const L3& y) {
+    return {x.y * y.z - y.y * x.z, x.z * y.x - y.z * x.x, x.x * y.y - y.x * x.y};
+}
+// A column-major 3x3 matrix (glm's m[c][r]) times a vector, in glm's order: (m0 x + m1 y) + m2 z per row.
+struct M3 {
+    V m[3][3];
+};
+RL_LANES_INLINE L3 operator*(const M3& a, const L3& v) {
+    return {(a.m[0][0] * v.x + a.m[1][0] * v.y) + a.m[2][0] * v.z,
+            (a.m[0][1] * v.x + a.m[1][1] * v.y) + a.m[2][1] * v.z,
+            (a.m[0][2] * v.x + a.m[1][2] * v.y) + a.m[2][2] * v.z};
+}
+
+// The velocities (and, for the solve, the motion since the step began) of one side of a batch, gathered from the
+// lanes' bodies. Lanes whose body is the static entry 0 read its zeros and identity and are never written back.
+struct Side {
+    L3 v, w;
+    V invMass;
+    M3 invInertia;
+    L3 dp;
+    M3 dR;
+};
+
+template <bool kMotion>
+RL_LANES_INLINE void gather(Side& s, std::span<const SolverBody> bodies, const uint32_t index[4]) {
+    const SolverBody* b[4] = {&bodies[index[0]], &bodies[index[1]], &bodies[index[2]], &bodies[index[3]]};
+    const auto lanes = [&](auto&& field) { return V{field(*b[0]), field(*b[1]), field(*b[2]), field(*b[3])}; };
+    const auto vector = [&](Vec3 SolverBody::*member) {
+        return L3{lanes([&](const SolverBody& x) { return (x.*member).x; }),
+                  lanes([&](const SolverBody& x) { return (x.*member).y; }),
+                  lanes([&](const SolverBody& x) { return (x.*member).z; })};
+    };
+    const auto matrix = [&](Mat3 SolverBody::*member, M3& out) {
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r)
+                out.m[c][r] = lanes([&](const SolverBody& x) { return (x.*member)[c][r]; });
+    };
+    s.v = vector(&SolverBody::v);
+    s.w = vector(&SolverBody::w);
+    s.invMass = lanes([](const SolverBody& x) { return x.invMass; });
+    matrix(&SolverBody::invInertia, s.invInertia);
+    if constexpr (kMotion) {
+        s.dp = vector(&SolverBody::dp);
+        matrix(&SolverBody::dR, s.dR);
+    }
+}
+
+RL_LANES_INLINE void scatter(const Side& s, std::span<SolverBody> bodies, const uint32_t index[4]) {
+    for (int l = 0; l < 4; ++l) {
+        if (index[l] == 0)
+            continue; // the static entry (and empty lanes): shared by every thread, never written
+        SolverBody& b = bodies[index[l]];
+        b.v = Vec3(s.v.x[l], s.v.y[l], s.v.z[l]);
+        b.w = Vec3(s.w.x[l], s.w.y[l], s.w.z[l]);
+    }
+}
+
+// One row of one point along direction d: r x d for each body, and that times the body's inverse inertia, computed
+// as prepare() computes ContactConstraint::Point's angular and inertia terms.
+struct Row {
+    L3 d, angularA, angularB, inertiaA, inertiaB;
+};
+RL_LANES_INLINE Row makeRow(const Side& a, const Side& b, const L3& d, const L3& rA, const L3& rB) {
+    Row row;
+    row.d = d;
+    row.angularA = cross(rA, d);
+    row.angularB = cross(rB, d);
+    row.inertiaA = a.invInertia * row.angularA;
+    row.inertiaB = b.invInertia * row.angularB;
+    return row;
+}
+
+// Relative velocity along the row: dot(d, vB - vA) + wB . (rB x d) - wA . (rA x d), as rowVelocity().
+RL_LANES_INLINE V rowVelocity(const Side& a, const Side& b, const Row& row) {
+    return (dot(row.d, b.v - a.v) + dot(b.w, row.angularB)) - dot(a.w, row.angularA);
+}
+
+// The impulse j along the row, as applyRow(): B gains it, A loses it.
+RL_LANES_INLINE void applyRow(Side& a, Side& b, const Row& row, const V& j) {
+    const V ja = a.invMass * j, jb = b.invMass * j;
+    a.v = a.v - ja * row.d;
+    a.w = a.w - j * row.inertiaA;
+    b.v = b.v + jb * row.d;
+    b.w = b.w + j * row.inertiaB;
+}
+
+} // namespace
+
+RL_WIDE_CLONES void ContactSolver::warmStartBatchRange(std::span<SolverBody> bodies, size_t begin, size_t end) {
+    if (!m_settings.warmStarting)
+        return;
+    for (size_t n = begin; n < end; ++n) {
+        const Batch& batch = m_batches[n];
+        Side a, b;
+        gather<false>(a, bodies, batch.bodyA);
+        gather<false>(b, bodies, batch.bodyB);
+        const L3 normal = load(batch.normal);
+        const L3 tangent[2] = {load(batch.tangent[0]), load(batch.tangent[1])};
+        for (uint32_t k = 0; k < batch.pointCount; ++k) {
+            const BatchPoint& p = m_batchPoints[batch.firstPoint + k];
+            if (!anyNonZero(p.impulse))
+                continue; // speculative points that never pushed, in every lane: nothing to apply
+            const L3 rA = load(p.rA), rB = load(p.rB);
+            applyRow(a, b, makeRow(a, b, normal, rA, rB), get(p.impulse[0]));
+            applyRow(a, b, makeRow(a, b, tangent[0], rA, rB), get(p.impulse[1]));
+            applyRow(a, b, makeRow(a, b, tangent[1], rA, rB), get(p.impulse[2]));
+        }
+        scatter(a, bodies, batch.bodyA);
+        scatter(b, bodies, batch.bodyB);
+    }
+}
+
+RL_WIDE_CLONES void ContactSolver::solveBatchRange(std::span<SolverBody> bodies, bool useBias, size_t begin,
+                                                   size_t end) {
+    const V inverseH = splat(m_inverseH), elapsed = splat(m_elapsed), zero = splat(0.0);
+    const V biasRate = splat(m_soft.biasRate), maxPushout = splat(-m_settings.maxPushoutSpeed);
+    const V softMass = splat(useBias ? m_soft.massScale : 1.0),
+            softImpulse = splat(useBias ? m_soft.impulseScale : 0.0);
+    const V one = splat(1.0);
+    const bool friction = m_settings.friction;
+    for (size_t n = begin; n < end; ++n) {
+        Batch& batch = m_batches[n];
+        Side a, b;
+        gather<true>(a, bodies, batch.bodyA);
+        gather<true>(b, bodies, batch.bodyB);
+        const L3 normal = load(batch.normal);
+        for (uint32_t k = 0; k < batch.pointCount; ++k) {
+            BatchPoint& p = m_batchPoints[batch.firstPoint + k];
+            // Current separation from the motion since the step began; anchors follow each body's rotation.
+            const L3 rA = load(p.rA), rB = load(p.rB);
+            const L3 d = (b.dp - a.dp) + (b.dR * rB - a.dR * rA);
+            const V s = dot(normal, d) + get(p.baseSeparation);
+            // Speculative points (s > 0) may close the gap within this substep; touching ones are soft while the
+            // bias pushes them apart, and rigid in the relax pass.
+            const auto speculative = s > zero;
+            const V pushout = useBias ? maxOf(biasRate * s, maxPushout) : zero;
+            const V velocityBias = select(speculative, s * inverseH, pushout);
+            const V massScale = select(speculative, one, softMass);
+            const V impulseScale = select(speculative, zero, softImpulse);
+            const Row row = makeRow(a, b, normal, rA, rB);
+            const V vn = rowVelocity(a, b, row);
+            const V accumulated = get(p.impulse[0]);
+            const V trial = (-get(p.mass[0]) * massScale) * (vn + velocityBias) - impulseScale * accumulated;
+            const V total = maxOf(accumulated + trial, zero);
+            const V impulse = total - accumulated;
+            put(p.impulse[0], total);
+            // The approach speed at impact (see solveConstraint() in ContactSolver.cpp).
+            const V maxImpulse = get(p.maxNormalImpulse);
+            const V relative = get(p.relativeVelocity);
+            put(p.relativeVelocity, select(impulse > zero && maxImpulse == zero,
+                                           relative + get(batch.approachAcceleration) * elapsed, relative));
+            put(p.maxNormalImpulse, maxOf(maxImpulse, impulse));
+            applyRow(a, b, row, impulse);
+        }
+        if (friction) {
+            const V coefficient = get(batch.friction);
+            for (uint32_t k = 0; k < batch.pointCount; ++k) {
+                BatchPoint& p = m_batchPoints[batch.firstPoint + k];
+                // No lane has a normal or friction impulse (speculative points): every clamp would give zero.
+                if (!anyNonZero(p.impulse))
+                    continue;
+                const V maxFriction = coefficient * get(p.impulse[0]);
+                const V minFriction = -maxFriction;
+                const L3 rA = load(p.rA), rB = load(p.rB);
+                for (int t = 0; t < 2; ++t) {
+                    const Row row = makeRow(a, b, load(batch.tangent[t]), rA, rB);
+                    const V vt = rowVelocity(a, b, row);
+                    const V accumulated = get(p.impulse[1 + t]);
+                    const V total = clampTo(accumulated + (-get(p.mass[1 + t])) * vt, minFriction, maxFriction);
+                    put(p.impulse[1 + t], total);
+                    applyRow(a, b, row, total - accumulated);
+                }
+            }
+        }
+        scatter(a, bodies, batch.bodyA);
+        scatter(b, bodies, batch.bodyB);
+    }
+}
+
+} // namespace rl

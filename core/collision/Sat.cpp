@@ -45,6 +45,150 @@ void closestPointsSegments(const Vec3& p0, const Vec3& p1, const Vec3& q0, const
     onQ = q0 + d2 * t;
 }
 
+namespace {
+
+// The final choice between the best face of A, of B, the best edge pair and the best rim axis. Relative tolerances
+// shrink the incumbent's separation towards zero, so a challenger must be clearly better; edges are weighed against
+// the better of the two faces (Gregorius, GDC 2015). The absolute part is capped at a hundredth of the smaller shape,
+// so millimetre shapes still get their exact features. Flat polygons keep the plain 0.1 mm preference: their side
+// rule and rim axes decide the side, and a wider margin there picked rim features whose witnesses do not lie along
+// the normal (tst_narrowphaserobustness). edgePoints fills in an edge pair's closest points once it wins.
+template <class EdgePoints>
+SatResult chooseAxis(const Shape& a, const Shape& b, const SatOptions& options, const SatResult& faceA,
+                     const SatResult& faceB, const SatResult& edges, const SatResult& rim, EdgePoints&& edgePoints) {
+    SatResult best = faceA;
+    const bool flat = a.polyhedron->flat || b.polyhedron->flat;
+    const Real faceRelative = flat ? 1.0 : options.faceRelative;
+    const Real edgeRelative = flat ? 1.0 : options.edgeRelative;
+    const Real bias = flat ? std::min(options.faceBias, Real(1e-4))
+                           : std::min(options.faceBias, Real(0.01) * std::min(a.minExtent(), b.minExtent()));
+    if (faceB.separation > faceRelative * best.separation + bias)
+        best = faceB;
+    const Real bestFace = std::max(faceA.separation, faceB.separation);
+    if (edges.separation > edgeRelative * bestFace + bias && edges.separation > best.separation) {
+        best = edges;
+        edgePoints(best);
+    }
+    if (rim.separation > edgeRelative * std::max(bestFace, edges.separation) + bias && rim.separation > best.separation)
+        best = rim;
+    return best;
+}
+
+// Box against box (ConvexPolyhedron::BoxFeatures), everything in A's frame: R and p place B there. The same axes as
+// the general query in the same order (A's faces, B's faces, then edge pairs), measured by projection instead of by
+// scanning vertices: a box's extent along a direction is the sum of its half extents times |direction . axis|. Each
+// edge direction pair has two Minkowski faces, +L and -L; the better is |d| - rA - rB with d the centres' offset
+// along L, and its edges are the ones extreme along it. The result is in A's frame, as the general query's.
+SatResult satBoxes(const Shape& a, const Shape& b, const Mat3& R, const Vec3& p, const SatOptions& options) {
+    const ConvexPolyhedron& A = *a.polyhedron;
+    const ConvexPolyhedron& B = *b.polyhedron;
+    const ConvexPolyhedron::BoxFeatures& ba = A.box;
+    const ConvexPolyhedron::BoxFeatures& bb = B.box;
+    Vec3 vb[3];
+    for (int j = 0; j < 3; ++j)
+        vb[j] = R * bb.axis[j];
+    const Vec3 cA = ba.center, cB = R * bb.center + p, d = cB - cA;
+    // |ua_i . vb_j|, shared by all three kinds of axes.
+    Real absDot[3][3];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            absDot[i][j] = std::abs(glm::dot(ba.axis[i], vb[j]));
+
+    // Each face's axis and side.
+    int axisA[6], axisB[6];
+    Real sideA[6], sideB[6];
+    for (int i = 0; i < 3; ++i)
+        for (int side = 0; side < 2; ++side) {
+            axisA[ba.face[i][side]] = i;
+            sideA[ba.face[i][side]] = side == 0 ? 1.0 : -1.0;
+            axisB[bb.face[i][side]] = i;
+            sideB[bb.face[i][side]] = side == 0 ? 1.0 : -1.0;
+        }
+
+    SatResult faceA;
+    faceA.feature = SatFeature::FaceA;
+    for (uint32_t f = 0; f < 6; ++f) {
+        const int i = axisA[f];
+        const Real sign = sideA[f];
+        const Real extentB = (bb.half[0] * absDot[i][0] + bb.half[1] * absDot[i][1]) + bb.half[2] * absDot[i][2];
+        const Real sep = sign * glm::dot(ba.axis[i], d) - extentB - ba.half[i];
+        if (sep > faceA.separation) {
+            faceA.separation = sep;
+            faceA.face = f;
+            faceA.normal = A.faces[f].normal;
+            if (sep > options.earlyOut)
+                return faceA;
+        }
+    }
+    SatResult faceB;
+    faceB.feature = SatFeature::FaceB;
+    for (uint32_t f = 0; f < 6; ++f) {
+        const int j = axisB[f];
+        const Real sign = sideB[f];
+        const Real extentA = (ba.half[0] * absDot[0][j] + ba.half[1] * absDot[1][j]) + ba.half[2] * absDot[2][j];
+        const Real sep = -sign * glm::dot(vb[j], d) - extentA - bb.half[j];
+        if (sep > faceB.separation) {
+            faceB.separation = sep;
+            faceB.face = f;
+            faceB.normal = -(R * B.faces[f].normal);
+            if (sep > options.earlyOut)
+                return faceB;
+        }
+    }
+    SatResult edges;
+    edges.feature = SatFeature::EdgePair;
+    Vec3 bestAxis(0.0);
+    int bestI = -1, bestJ = -1;
+    for (int i = 0; i < 3 && !(edges.separation > options.earlyOut); ++i)
+        for (int j = 0; j < 3 && !(edges.separation > options.earlyOut); ++j) {
+            Vec3 axis = glm::cross(ba.axis[i], vb[j]);
+            const Real len = glm::length(axis);
+            // Parallel edges give no axis of their own; the face axes next to them cover that case.
+            if (!(len > 1e-6))
+                continue;
+            axis /= len;
+            Real extentA = 0.0, extentB = 0.0;
+            for (int k = 0; k < 3; ++k) {
+                extentA += ba.half[k] * std::abs(glm::dot(axis, ba.axis[k]));
+                extentB += bb.half[k] * std::abs(glm::dot(axis, vb[k]));
+            }
+            Real offset = glm::dot(axis, d);
+            if (offset < 0.0) {
+                axis = -axis;
+                offset = -offset;
+            }
+            const Real sep = offset - extentA - extentB;
+            if (sep > edges.separation) {
+                edges.separation = sep;
+                edges.normal = axis;
+                bestAxis = axis;
+                bestI = i;
+                bestJ = j;
+            }
+        }
+    // The edges of the best pair: A's edge along axis i that is extreme along +L, B's along axis j extreme along -L.
+    const auto edgePoints = [&](SatResult& r) {
+        const int i = bestI, j = bestJ;
+        const int bitsA = (glm::dot(bestAxis, ba.axis[(i + 1) % 3]) < 0.0 ? 1 : 0) |
+                          (glm::dot(bestAxis, ba.axis[(i + 2) % 3]) < 0.0 ? 2 : 0);
+        const int bitsB =
+            (glm::dot(-bestAxis, vb[(j + 1) % 3]) < 0.0 ? 1 : 0) | (glm::dot(-bestAxis, vb[(j + 2) % 3]) < 0.0 ? 2 : 0);
+        r.edgeA = ba.edge[i][bitsA];
+        r.edgeB = bb.edge[j][bitsB];
+        const PolyEdge& ea = A.edges[r.edgeA];
+        const PolyEdge& eb = B.edges[r.edgeB];
+        closestPointsSegments(A.vertices[ea.v0], A.vertices[ea.v1], R * B.vertices[eb.v0] + p,
+                              R * B.vertices[eb.v1] + p, r.pointA, r.pointB);
+    };
+    if (bestI >= 0 && edges.separation > options.earlyOut) {
+        edgePoints(edges);
+        return edges;
+    }
+    return chooseAxis(a, b, options, faceA, faceB, edges, SatResult{}, edgePoints);
+}
+
+} // namespace
+
 SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB,
                        const SatOptions& options) {
     const ConvexPolyhedron& A = *a.polyhedron;
@@ -54,6 +198,15 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
     const Mat3 R = rAT * xfB.rotation;
     const Mat3 RT = glm::transpose(R);
     const Vec3 p = rAT * (xfB.position - xfA.position);
+    if (A.isBox && B.isBox && options.useBoxes) {
+        SatResult r = satBoxes(a, b, R, p, options);
+        if (r.feature == SatFeature::EdgePair) {
+            r.pointA = xfA.apply(r.pointA);
+            r.pointB = xfA.apply(r.pointB);
+        }
+        r.normal = xfA.rotate(r.normal);
+        return r;
+    }
     thread_local std::vector<Vec3> bv, bn;
     bv.resize(B.vertices.size());
     bn.resize(B.faces.size());
@@ -289,29 +442,11 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
         faceA = SatResult{};
         queryFacesA(false, faceA);
     }
-    SatResult best = faceA;
-    // Relative tolerances shrink the incumbent's separation towards zero, so a challenger must be clearly better;
-    // edges are weighed against the better of the two faces (Gregorius, GDC 2015). The absolute part is capped at a
-    // hundredth of the smaller shape, so millimetre shapes still get their exact features. Flat polygons keep the
-    // plain 0.1 mm preference: their side rule and rim axes decide the side, and a wider margin there picked rim
-    // features whose witnesses do not lie along the normal (tst_narrowphaserobustness).
-    const bool flat = A.flat || B.flat;
-    const Real faceRelative = flat ? 1.0 : options.faceRelative;
-    const Real edgeRelative = flat ? 1.0 : options.edgeRelative;
-    const Real bias = flat ? std::min(options.faceBias, Real(1e-4))
-                           : std::min(options.faceBias, Real(0.01) * std::min(a.minExtent(), b.minExtent()));
-    if (faceB.separation > faceRelative * best.separation + bias)
-        best = faceB;
-    const Real bestFace = std::max(faceA.separation, faceB.separation);
-    if (edges.separation > edgeRelative * bestFace + bias && edges.separation > best.separation) {
-        best = edges;
-        const PolyEdge& ea = A.edges[best.edgeA];
-        const PolyEdge& eb = B.edges[best.edgeB];
-        closestPointsSegments(A.vertices[ea.v0], A.vertices[ea.v1], bv[eb.v0], bv[eb.v1], best.pointA, best.pointB);
-    }
-    if (rim.separation > edgeRelative * std::max(bestFace, edges.separation) + bias && rim.separation > best.separation)
-        best = rim;
-    return finish(best);
+    return finish(chooseAxis(a, b, options, faceA, faceB, edges, rim, [&](SatResult& r) {
+        const PolyEdge& ea = A.edges[r.edgeA];
+        const PolyEdge& eb = B.edges[r.edgeB];
+        closestPointsSegments(A.vertices[ea.v0], A.vertices[ea.v1], bv[eb.v0], bv[eb.v1], r.pointA, r.pointB);
+    }));
 }
 
 } // namespace rl

@@ -24,6 +24,9 @@ struct SatOptions {
     // feature ids, so warm starting is lost and the pile never comes to rest. 1 gives the plain absolute bias.
     Real faceRelative = 1.0;
     Real edgeRelative = 1.0;
+    // Two boxes are measured by projection onto their axes (the same axes and choice, a few times faster). Off:
+    // the general query, which tests compare it with.
+    bool useBoxes = true;
 };
 
 struct SatResult {

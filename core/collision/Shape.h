@@ -57,6 +57,19 @@ struct ConvexPolyhedron {
     Vec3 centroid{0.0}; // vertex mean: an interior point (for flat shapes, a point of the polygon)
     bool flat = false;
 
+    // Set when the polyhedron is a rectangular box: 8 vertices, 6 faces in three pairs of opposite faces at right
+    // angles (to 1e-6, as exported cubes are), so the SAT can measure its axes by projection (see Sat.cpp).
+    struct BoxFeatures {
+        Vec3 center{0.0};
+        Vec3 axis[3];        // unit, orthonormal, right-handed
+        Real half[3] = {};   // half extents along the axes
+        uint32_t face[3][2]; // face index with normal +axis[i] ([i][0]) and -axis[i] ([i][1])
+        uint32_t edge[3][4]; // edge index parallel to axis[i]: bit 0 set if it lies on the - side of axis[(i+1)%3],
+                             // bit 1 if on the - side of axis[(i+2)%3]
+    };
+    bool isBox = false;
+    BoxFeatures box;
+
     uint32_t supportIndex(const Vec3& direction) const;
     Vec3 support(const Vec3& direction) const { return vertices[supportIndex(direction)]; }
 };

@@ -81,6 +81,116 @@ private slots:
         QVERIFY(edgeWins > 100); // the edge query is really exercised
     }
 
+    // Boxes are recognised: made as boxes, as hulls of exact corners, and as hulls of a turned cube whose corners were
+    // written with six decimals (as Blender's OBJ exporter does); a slanted parallelepiped and a wedge are not boxes.
+    void boxesAreRecognised_data() {
+        QTest::addColumn<int>("kind");
+        QTest::addColumn<bool>("box");
+        QTest::newRow("makeBox") << 0 << true;
+        QTest::newRow("hull of the corners") << 1 << true;
+        QTest::newRow("turned cube, six decimals") << 2 << true;
+        QTest::newRow("slanted parallelepiped") << 3 << false;
+        QTest::newRow("wedge") << 4 << false;
+    }
+    void boxesAreRecognised() {
+        QFETCH(int, kind);
+        QFETCH(bool, box);
+        const Vec3 h(0.3, 0.1, 0.2);
+        std::vector<Vec3> corners;
+        for (int i = 0; i < 8; ++i)
+            corners.emplace_back(i & 1 ? h.x : -h.x, i & 2 ? h.y : -h.y, i & 4 ? h.z : -h.z);
+        const Mat3 turn = glm::mat3_cast(axisAngle(glm::normalize(Vec3(1.0, 2.0, 3.0)), 0.7));
+        for (Vec3& c : corners) {
+            if (kind == 2)
+                c = glm::round((turn * c + Vec3(1.5, 0.25, -2.0)) * 1e6) * 1e-6;
+            if (kind == 3)
+                c.x += 0.5 * c.y; // a parallelepiped whose faces do not meet at right angles
+        }
+        if (kind == 4)
+            corners.resize(6); // a wedge: the four corners at z = -h.z and two at z = +h.z
+        Shape s = kind == 0 ? mustShape(makeBox(h)) : mustShape(makeHull(computeConvexHull(corners)));
+        QCOMPARE(s.polyhedron->isBox, box);
+        if (!box)
+            return;
+        const ConvexPolyhedron::BoxFeatures& f = s.polyhedron->box;
+        Real halves[3] = {f.half[0], f.half[1], f.half[2]};
+        std::sort(halves, halves + 3);
+        QVERIFY(std::abs(halves[0] - 0.1) < 1e-5 && std::abs(halves[1] - 0.2) < 1e-5 &&
+                std::abs(halves[2] - 0.3) < 1e-5);
+        QVERIFY(glm::dot(glm::cross(f.axis[0], f.axis[1]), f.axis[2]) > 1.0 - 1e-12);
+        for (int i = 0; i < 3; ++i) {
+            QVERIFY(glm::dot(s.polyhedron->faces[f.face[i][0]].normal, f.axis[i]) > 1.0 - 1e-6);
+            QVERIFY(glm::dot(s.polyhedron->faces[f.face[i][1]].normal, f.axis[i]) < -1.0 + 1e-6);
+            for (int bits = 0; bits < 4; ++bits) {
+                const PolyEdge& e = s.polyhedron->edges[f.edge[i][bits]];
+                const Vec3 middle = 0.5 * (s.polyhedron->vertices[e.v0] + s.polyhedron->vertices[e.v1]) - f.center;
+                QCOMPARE(glm::dot(middle, f.axis[(i + 1) % 3]) < 0.0, (bits & 1) != 0);
+                QCOMPARE(glm::dot(middle, f.axis[(i + 2) % 3]) < 0.0, (bits & 2) != 0);
+            }
+        }
+    }
+
+    // Two boxes measured by projection give the general query's answer: the same kind of feature, the same face or
+    // edges, the same normal and separation (to rounding), the same early outs; over box pairs apart, touching
+    // and deeply overlapping, boxes of six-decimal corners included.
+    void boxesByProjectionAsTheGeneralQuery() {
+        std::mt19937_64 rng(17);
+        std::uniform_real_distribution<Real> u(-1.0, 1.0), size(0.05, 0.6);
+        int kinds[3] = {0, 0, 0}, earlyOuts = 0;
+        Real worst = 0.0;
+        for (int n = 0; n < 4000; ++n) {
+            auto makeOne = [&](bool rounded) {
+                const Vec3 h(size(rng), size(rng), size(rng));
+                if (!rounded)
+                    return mustShape(makeBox(h));
+                std::vector<Vec3> corners;
+                const Mat3 turn = glm::mat3_cast(randomRotation(rng));
+                for (int i = 0; i < 8; ++i)
+                    corners.push_back(
+                        glm::round(turn * Vec3(i & 1 ? h.x : -h.x, i & 2 ? h.y : -h.y, i & 4 ? h.z : -h.z) * 1e6) *
+                        1e-6);
+                return mustShape(makeHull(computeConvexHull(corners)));
+            };
+            const Shape a = makeOne(n % 2 == 1), b = makeOne(n % 3 == 1);
+            QVERIFY(a.polyhedron->isBox && b.polyhedron->isBox);
+            const Transform xa = Transform::fromQuat(Vec3(u(rng), u(rng), u(rng)), randomRotation(rng));
+            const Transform xb =
+                Transform::fromQuat(xa.position + 0.8 * Vec3(u(rng), u(rng), u(rng)), randomRotation(rng));
+            SatOptions options;
+            options.faceBias = 0.005;
+            options.faceRelative = 0.98;
+            options.edgeRelative = 0.9;
+            options.earlyOut = n % 4 == 0 ? 0.02 : std::numeric_limits<Real>::infinity();
+            SatOptions general = options;
+            general.useBoxes = false;
+            const SatResult box = satPolyhedra(a, xa, b, xb, options);
+            const SatResult ref = satPolyhedra(a, xa, b, xb, general);
+            if (ref.separation > options.earlyOut) {
+                // Either answer only says "apart by more than the early out".
+                QVERIFY(box.separation > options.earlyOut);
+                ++earlyOuts;
+                continue;
+            }
+            QCOMPARE(int(box.feature), int(ref.feature));
+            ++kinds[int(ref.feature)];
+            if (ref.feature == SatFeature::EdgePair) {
+                QCOMPARE(box.edgeA, ref.edgeA);
+                QCOMPARE(box.edgeB, ref.edgeB);
+                QVERIFY(glm::length(box.pointA - ref.pointA) < 1e-9 && glm::length(box.pointB - ref.pointB) < 1e-9);
+            } else {
+                QCOMPARE(box.face, ref.face);
+            }
+            // Exact boxes agree to rounding; six-decimal ones to the fit of their box.
+            const bool exact = n % 2 == 0 && n % 3 != 1;
+            QVERIFY(glm::length(box.normal - ref.normal) < (exact ? 1e-12 : 1e-4));
+            QVERIFY(std::abs(box.separation - ref.separation) < (exact ? 1e-12 : 2e-5));
+            worst = std::max(worst, std::abs(box.separation - ref.separation));
+        }
+        qInfo("face A %d, face B %d, edge pairs %d, early outs %d; worst separation difference %.3g m", kinds[0],
+              kinds[1], kinds[2], earlyOuts, worst);
+        QVERIFY(kinds[0] > 100 && kinds[1] > 100 && kinds[2] > 100 && earlyOuts > 100);
+    }
+
     // Flat polygons against hulls: the pruned query with the side rule equals the brute force over the axes
     // that lean to the polygon's facing side.
     void flatPolygonsAgainstBruteForce() {

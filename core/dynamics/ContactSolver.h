@@ -129,13 +129,6 @@ public:
     void warmStartSequential(std::span<SolverBody> bodies);
     void solveSequential(std::span<SolverBody> bodies, bool useBias);
 
-    // Four doubles, one per lane of a batch.
-    struct alignas(32) Lanes {
-        Real v[4];
-    };
-    struct alignas(16) FloatLanes {
-        float v[4];
-    };
     // Bounces every point that approached faster than the threshold and pushed back: its normal speed becomes
     // -e times the approach speed. Both are speeds at the instant of impact. The solver's velocities are means over
     // a substep (the position update is x += v h), which under a constant relative acceleration a_n along the normal
@@ -146,6 +139,14 @@ public:
     void applyRestitution(std::span<SolverBody> bodies);
     // Writes the accumulated impulses back to the manifolds for warm starting in the next step.
     void storeImpulses(std::span<Manifold> manifolds) const;
+
+    // One value per lane of a batch (the batch storage below; ContactSolverWide.cpp loads them into vectors).
+    struct alignas(32) Lanes {
+        Real v[4];
+    };
+    struct alignas(16) FloatLanes {
+        float v[4];
+    };
 
     const std::vector<ContactConstraint>& constraints() const {
         syncFromBatches();
@@ -169,7 +170,8 @@ private:
     // (54k in large_pyramid) and were bound by memory when the points carried their rows' r x d and I^-1 (r x d)
     // (1.6 kB per four lanes). Those are recomputed from the anchors and the bodies' inverse inertia, the same
     // numbers prepare() computes for ContactConstraint::Point. The separation and masses are floats (prepare() rounds
-    // them for both kinds of sweep); anchors and impulses stay double. (Float anchors gave no measurable speed-up.)
+    // them for both kinds of sweep); anchors and impulses stay double. (Float anchors gave no speed-up beyond this
+    // machine's noise.)
     struct BatchPoint {
         Lanes rA[3], rB[3];
         FloatLanes baseSeparation;

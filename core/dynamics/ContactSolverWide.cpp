@@ -1,12 +1,12 @@
-// The contact solver's sweeps, four constraints at a time (see ContactSolver::solveBatches()).
+// The contact solver's sweeps, four constraints at a time (ContactSolver::warmStartBatchRange() and
+// solveBatchRange()).
 //
 // A batch holds four constraints of one level of the schedule, so its lanes share no moving body: the lanes are
 // independent, and every body receives the same updates in the same order as in the sequential sweep. Each lane
 // performs exactly the operations of the scalar rows in ContactSolver.cpp, in the same order, so the results are the
-// same numbers. The lanes are plain arrays of four doubles; the compiler turns the per-lane loops into vector
-// instructions (two SSE2 operations per line by default, one AVX operation in the x86-64-v3 clone where the CPU has
-// it). The build does not contract a * b + c into fused multiply-adds (ISO C++ mode), so both clones compute the same
-// bits, and a machine gives the same results whichever clone it picks.
+// same numbers. This file is built with -ffp-contract=off (core/CMakeLists.txt): no a * b + c becomes a fused
+// multiply-add, so the x86-64-v3 clone, the baseline clone and the scalar reference compute the same bits, and a
+// machine gives the same results whichever clone it picks.
 #include "dynamics/ContactSolver.h"
 
 #include <algorithm>

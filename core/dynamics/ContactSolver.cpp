@@ -203,16 +203,19 @@ void ContactSolver::buildBatches() {
     // their point count, and pushing ones apart from those that did not push in the last step: the lanes of a batch
     // then have work of the same size, and a point slot in which no lane pushes skips its friction rows and warm
     // start, as the scalar sweep skips such points.
-    auto key = [&](uint32_t index) {
-        const ContactConstraint& c = m_constraints[index];
+    // The keys are worked out once per constraint, not in every comparison of the sort.
+    thread_local std::vector<uint8_t> key;
+    key.resize(m_constraints.size());
+    for (size_t i = 0; i < m_constraints.size(); ++i) {
+        const ContactConstraint& c = m_constraints[i];
         bool pushing = false;
         for (int k = 0; k < c.pointCount; ++k)
             pushing = pushing || c.points[k].normalImpulse != 0.0;
-        return (pushing ? 0 : 8) + (4 - c.pointCount);
-    };
+        key[i] = static_cast<uint8_t>((pushing ? 0 : 8) + (4 - c.pointCount));
+    }
     for (size_t level = 0; level < levels; ++level)
         std::stable_sort(m_solveOrder.begin() + levelBegin(level), m_solveOrder.begin() + levelEnd(level),
-                         [&](uint32_t l, uint32_t r) { return key(l) < key(r); });
+                         [&](uint32_t l, uint32_t r) { return key[l] < key[r]; });
     for (size_t level = 0; level < levels; ++level) {
         m_batchLevelStart[level] = static_cast<uint32_t>(m_batches.size());
         for (size_t first = levelBegin(level); first < levelEnd(level); first += 4) {

@@ -238,7 +238,9 @@ int main(int argc, char** argv) {
         const double gjkEpa2 = pairsPerSecond(set.poses, seconds, [&](const Pose& p) {
             btGjkEpaSolver2::sResults r;
             sink = sink + (btGjkEpaSolver2::SignedDistance(shapeA.get(), btPose(p).first, shapeB.get(),
-                                                           btPose(p).second, btVector3(1, 0, 0), r) ? 1 : 0);
+                                                           btPose(p).second, btVector3(1, 0, 0), r)
+                               ? 1
+                               : 0);
         });
         // Same answers? Compare the signed distances pair by pair.
         double worst = 0.0, sum = 0.0;

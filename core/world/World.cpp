@@ -381,6 +381,21 @@ void World::narrowphase() {
         if (m_state.isMoving(m_contactPool[slot].bodyA) || m_state.isMoving(m_contactPool[slot].bodyB))
             active.push_back(slot);
 
+    // The contacts sit in the pool in no useful order for the cache (about 700 bytes each, some 6,000 pairs in
+    // ramps.obj): a few pairs ahead, every line of the next contact is fetched while this one is computed. (Over
+    // ramps.obj's first 240 frames the stage went from 389-429 ms to 335-410 ms, in seven interleaved pairs.)
+    constexpr size_t kAhead = 4;
+    const auto collideRange = [&](size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            if (i + kAhead < end) {
+                const char* ahead = reinterpret_cast<const char*>(&m_contactPool[active[i + kAhead]]);
+                for (size_t line = 0; line < sizeof(Contact); line += 64)
+                    __builtin_prefetch(ahead + line);
+            }
+            collidePair(m_contactPool[active[i]]);
+        }
+    };
+
     // Each pair writes only its own contact, so sharing the list out over threads gives identical results. The
     // members take small batches as they go: a full SAT costs many times an early out, and even halves of the list
     // kept one thread waiting for the other.
@@ -388,15 +403,11 @@ void World::narrowphase() {
         constexpr size_t kBatch = 16;
         std::atomic<size_t> next{0};
         m_team->run([&](int) {
-            for (size_t begin = next.fetch_add(kBatch); begin < active.size(); begin = next.fetch_add(kBatch)) {
-                const size_t end = std::min(active.size(), begin + kBatch);
-                for (size_t i = begin; i < end; ++i)
-                    collidePair(m_contactPool[active[i]]);
-            }
+            for (size_t begin = next.fetch_add(kBatch); begin < active.size(); begin = next.fetch_add(kBatch))
+                collideRange(begin, std::min(active.size(), begin + kBatch));
         });
     } else {
-        for (uint32_t slot : active)
-            collidePair(m_contactPool[slot]);
+        collideRange(0, active.size());
     }
 
     // A touching contact between an awake body and a sleeping one wakes the sleeper's island.

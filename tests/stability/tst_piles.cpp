@@ -23,9 +23,18 @@ private slots:
     // undamped pendulum (0.8 s period, up to 0.5 rad/s), since turning about that line slides neither point and no
     // friction acts. Rigid bodies with point contacts do that; damping it needs rolling resistance, which the
     // solver does not have yet (issue 4's note).
+    //
+    // Under AddressSanitizer (CI's second build, about 45 s a pile there) two of the five piles run: that build looks
+    // for memory and undefined-behaviour errors, which the same code paths show in two piles as in five, and CI has
+    // 30 minutes in all. The Release run of ctest runs all five.
     void thousandBoxesSettle_data() {
         QTest::addColumn<unsigned>("seed");
-        for (unsigned seed : {1u, 6u, 9u, 13u, 14u})
+#ifdef __SANITIZE_ADDRESS__
+        const std::initializer_list<unsigned> seeds = {1u, 9u};
+#else
+        const std::initializer_list<unsigned> seeds = {1u, 6u, 9u, 13u, 14u};
+#endif
+        for (unsigned seed : seeds)
             QTest::addRow("seed %u", seed) << seed;
     }
     void thousandBoxesSettle() {

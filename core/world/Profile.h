@@ -41,6 +41,7 @@ enum class Counter {
     CcdBodies,        // bodies swept by CCD
     CcdHits,          // sweeps that stopped a body
     Steps,
+    IslandsSharedOut, // solves whose islands a team of threads shared out (World::splitByIslands())
     Count
 };
 inline constexpr int kCounterCount = static_cast<int>(Counter::Count);

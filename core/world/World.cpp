@@ -548,17 +548,88 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
         if (inGroup(contact.bodyA) || inGroup(contact.bodyB))
             scratch.activeContacts.push_back(slot);
     }
-    solveSubsteps(m_substeps * refinement);
-    const ContactSolverCounters& sc = scratch.solver.counters();
-    m_solverCounters.normalRows += sc.normalRows;
-    m_solverCounters.frictionRows += sc.frictionRows;
-    m_solverCounters.restitutionRows += sc.restitutionRows;
-    for (ClampCounters& clamps : scratch.clamps) {
-        m_state.clampCounters.linear += clamps.linear;
-        m_state.clampCounters.angular += clamps.angular;
-        clamps = {};
+    const int substeps = m_substeps * refinement;
+    std::vector<SolveScratch*> solved{&scratch};
+    if (splitByIslands()) {
+        m_profile.count(Counter::IslandsSharedOut, 1);
+        StageTimer timer(m_profile, Stage::Solve);
+        m_team->run([&](int member) { solveSubsteps(m_memberScratch[static_cast<size_t>(member)], substeps, false); });
+        solved.clear();
+        for (SolveScratch& part : m_memberScratch)
+            solved.push_back(&part);
+    } else {
+        solveSubsteps(scratch, substeps, true);
     }
-    m_profile.count(Counter::IntegratedBodies, group.size() * static_cast<uint64_t>(m_substeps * refinement));
+    for (SolveScratch* part : solved) {
+        const ContactSolverCounters& sc = part->solver.counters();
+        m_solverCounters.normalRows += sc.normalRows;
+        m_solverCounters.frictionRows += sc.frictionRows;
+        m_solverCounters.restitutionRows += sc.restitutionRows;
+        for (ClampCounters& clamps : part->clamps) {
+            m_state.clampCounters.linear += clamps.linear;
+            m_state.clampCounters.angular += clamps.angular;
+            clamps = {};
+        }
+    }
+    m_profile.count(Counter::IntegratedBodies, group.size() * static_cast<uint64_t>(substeps));
+}
+
+bool World::splitByIslands() {
+    // Islands share no moving body, so a team can solve whole islands apart, with no synchronisation at all: each
+    // member takes its islands through every substep with a solver of its own. Each body still sees the operations
+    // of one thread in the same order (the constraints of its island, in manifold order), so the results are the
+    // same numbers. Islands go to members largest first, each to the least loaded (by bodies plus contacts); a
+    // group whose islands cannot be shared out fairly (one island of most of the work: a pile, a pyramid) is left to
+    // the level-by-level team of solveSubsteps().
+    const SolveScratch& scratch = m_scratch;
+    if (!m_team || scratch.bodies.size() < kMinBodiesForTeam)
+        return false;
+    const size_t members = static_cast<size_t>(m_team->size());
+    m_islandMember.resize(m_state.size());
+    std::vector<std::pair<uint32_t, uint32_t>>& load = m_islandLoad; // (work, island root), one per island
+    load.clear();
+    for (uint32_t i : scratch.bodies)
+        m_islandMember[m_island[i]] = kNoMember;
+    const auto add = [&](uint32_t root) {
+        if (m_islandMember[root] == kNoMember) {
+            m_islandMember[root] = static_cast<uint32_t>(load.size()); // the island's entry in load, for now
+            load.emplace_back(0, root);
+        }
+        ++load[m_islandMember[root]].first;
+    };
+    for (uint32_t i : scratch.bodies)
+        add(m_island[i]);
+    for (uint32_t slot : scratch.activeContacts) {
+        const Contact& c = m_contactPool[slot];
+        add(m_island[m_state.isMoving(c.bodyA) ? c.bodyA : c.bodyB]);
+    }
+    std::sort(load.begin(), load.end(), [](const auto& l, const auto& r) {
+        return l.first != r.first ? l.first > r.first : l.second < r.second;
+    });
+    std::vector<uint64_t> total(members, 0);
+    uint64_t all = 0;
+    for (const auto& [work, root] : load) {
+        const size_t least = static_cast<size_t>(std::min_element(total.begin(), total.end()) - total.begin());
+        total[least] += work;
+        all += work;
+        m_islandMember[root] = static_cast<uint32_t>(least);
+    }
+    // The slowest member's share against a perfect one: at most 60 % of the work on one of two members.
+    if (10 * *std::max_element(total.begin(), total.end()) * members > 12 * all)
+        return false;
+    m_memberScratch.resize(members);
+    for (SolveScratch& part : m_memberScratch) {
+        part.bodies.clear();
+        part.clearContacts();
+    }
+    for (uint32_t i : scratch.bodies)
+        m_memberScratch[m_islandMember[m_island[i]]].bodies.push_back(i);
+    for (uint32_t slot : scratch.activeContacts) {
+        const Contact& c = m_contactPool[slot];
+        m_memberScratch[m_islandMember[m_island[m_state.isMoving(c.bodyA) ? c.bodyA : c.bodyB]]]
+            .activeContacts.push_back(slot);
+    }
+    return true;
 }
 
 void World::SolveScratch::clearContacts() {
@@ -570,8 +641,7 @@ void World::SolveScratch::clearContacts() {
     restitution.clear();
 }
 
-void World::solveSubsteps(int substeps) {
-    SolveScratch& scratch = m_scratch;
+void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) {
     const Real dt = 1.0 / m_fps;
     const Real h = dt / substeps;
     const bool rotation = m_effects.effects.has(Effect::Rotation);
@@ -630,11 +700,13 @@ void World::solveSubsteps(int substeps) {
     // pyramid20's 590 constraints in 111 levels took 14 % longer on average on two threads than on one.
     const size_t levelWidth = solver.levelCount() > 0 ? solver.solveOrder().size() / solver.levelCount() : 0;
     const int members =
-        m_team && group.size() >= kMinBodiesForTeam && levelWidth >= kMinLevelWidth ? m_team->size() : 1;
+        mayUseTeam && m_team && group.size() >= kMinBodiesForTeam && levelWidth >= kMinLevelWidth ? m_team->size() : 1;
     scratch.clamps.resize(static_cast<size_t>(members));
-    const bool timed = members == 1; // the per-stage timers are not thread safe: then the whole solve counts
+    // The per-stage timers are not thread safe: for a team, or islands shared out (!mayUseTeam), the caller times the
+    // whole solve.
+    const bool timed = members == 1 && mayUseTeam;
     std::optional<StageTimer> solveTimer;
-    if (!timed)
+    if (members > 1)
         solveTimer.emplace(m_profile, Stage::Solve);
     const size_t levels = solver.levelCount();
 
@@ -715,7 +787,9 @@ void World::solveSubsteps(int substeps) {
     solveTimer.reset();
 
     if (m_solverSettings.restitution) {
-        StageTimer t(m_profile, Stage::Restitution);
+        std::optional<StageTimer> t;
+        if (mayUseTeam)
+            t.emplace(m_profile, Stage::Restitution);
         toSolver(0, group.size());
         solver.applyRestitution(bodies);
         fromSolver(0, group.size());

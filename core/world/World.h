@@ -174,8 +174,11 @@ private:
         std::vector<ClampCounters> clamps; // per member of the team
         void clearContacts();
     };
-    // The group of m_scratch through `substeps` substeps, then restitution.
-    void solveSubsteps(int substeps);
+    // The group of `scratch` through `substeps` substeps, then restitution; on the team when mayUseTeam is set and
+    // the group is large enough, else on the calling thread.
+    void solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam);
+    // Shares m_scratch's islands out among the team's members (m_memberScratch) if that is worth it.
+    bool splitByIslands();
     // A group is solved by the whole team only from this many bodies on, and with at least this many constraints
     // per level of the solver's schedule on average (ramps.obj's pile: 37; the 5,050-cube pyramid: 25).
     static constexpr size_t kMinBodiesForTeam = 128;
@@ -233,6 +236,10 @@ private:
     std::vector<Real> m_islandMinMass, m_islandMaxMass;
     std::vector<uint32_t> m_narrowActive, m_solverIndex, m_moving;
     SolveScratch m_scratch;
+    std::vector<SolveScratch> m_memberScratch; // islands shared out: one part per member of the team
+    static constexpr uint32_t kNoMember = 0xffffffffu;
+    std::vector<uint32_t> m_islandMember; // per island root: the member that solves it (splitByIslands())
+    std::vector<std::pair<uint32_t, uint32_t>> m_islandLoad;
     ContactSolverCounters m_solverCounters;
     std::vector<Vec3> m_stepStartPosition;
     std::vector<Quat> m_stepStartOrientation;

@@ -220,7 +220,7 @@ private slots:
 
     void islandsSolvedOnTwoThreadsGiveIdenticalResults() {
         // 200 two-box stacks are 200 islands, enough for the solve to run on two threads (from 128 moving bodies
-        // on); a 1:1000 pair adds an island with refined substeps.
+        // on); a 1:1000 pair adds an island with refined substeps (a group of its own, too small for the team).
         Scene s = floorScene();
         for (int i = 0; i < 200; ++i) {
             const Vec3 at((i % 20) * 1.0 - 10.0, 0.0, (i / 20) * 1.0 - 5.0);
@@ -234,7 +234,7 @@ private slots:
         s.bodies.push_back(light);
         s.bodies.push_back(heavy);
         uint64_t hashes[2];
-        uint64_t rows[2], integrated[2];
+        uint64_t rows[2], integrated[2], shared[2];
         for (int run = 0; run < 2; ++run) {
             WorldOptions options;
             options.threads = run + 1;
@@ -245,8 +245,13 @@ private slots:
             hashes[run] = hashState(w);
             rows[run] = w.profile().counter(Counter::NormalRows);
             integrated[run] = w.profile().counter(Counter::IntegratedBodies);
+            shared[run] = w.profile().counter(Counter::IslandsSharedOut);
         }
         QVERIFY(rows[0] > 0);
+        // Two threads shared the 200 islands out, each solving its own with no synchronisation (World::
+        // splitByIslands()), in every step; one thread has no one to share with.
+        QCOMPARE(shared[0], uint64_t(0));
+        QCOMPARE(shared[1], uint64_t(90));
         QCOMPARE(hashes[1], hashes[0]);
         QCOMPARE(rows[1], rows[0]);
         QCOMPARE(integrated[1], integrated[0]);

@@ -26,41 +26,47 @@ Vec3 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec3& rA, 
     return (b.v + glm::cross(b.w, rB)) - (a.v + glm::cross(a.w, rA));
 }
 
+// r x d and I^-1 (r x d) of one side of a row, computed as ContactSolverWide.cpp's batches compute them.
+inline Vec3 angularOf(const Vec3& r, const Vec3& d) {
+    return glm::cross(r, d);
+}
+inline Vec3 inertiaOf(const SolverBody& body, const Vec3& r, const Vec3& d) {
+    return body.invInertia * glm::cross(r, d);
+}
+
 // Relative velocity of the anchors along row d of point p: dot(d, vB - vA) + wB . (rB x d) - wA . (rA x d).
-inline Real rowVelocity(const SolverBody& a, const SolverBody& b, const ContactConstraint::Point& p, int row,
-                        const Vec3& d) {
-    return glm::dot(d, b.v - a.v) + glm::dot(b.w, p.angularB[row]) - glm::dot(a.w, p.angularA[row]);
+inline Real rowVelocity(const SolverBody& a, const SolverBody& b, const ContactConstraint::Point& p, const Vec3& d) {
+    return glm::dot(d, b.v - a.v) + glm::dot(b.w, angularOf(p.rB, d)) - glm::dot(a.w, angularOf(p.rA, d));
 }
 
 // Applies the impulse j along row d of point p (to B, and its opposite to A).
-inline void applyRow(SolverBody& a, SolverBody& b, const ContactConstraint::Point& p, int row, const Vec3& d, Real j) {
+inline void applyRow(SolverBody& a, SolverBody& b, const ContactConstraint::Point& p, const Vec3& d, Real j) {
     a.v -= (a.invMass * j) * d;
-    a.w -= j * p.inertiaA[row];
+    a.w -= j * inertiaOf(a, p.rA, d);
     b.v += (b.invMass * j) * d;
-    b.w += j * p.inertiaB[row];
+    b.w += j * inertiaOf(b, p.rB, d);
 }
 
 // rowVelocity() and applyRow() without the side that is the static entry 0 (see solveConstraint()).
 template <bool kStaticA, bool kStaticB>
-inline Real rowVelocityT(const SolverBody& a, const SolverBody& b, const ContactConstraint::Point& p, int row,
-                         const Vec3& d) {
+inline Real rowVelocityT(const SolverBody& a, const SolverBody& b, const ContactConstraint::Point& p, const Vec3& d) {
     if constexpr (kStaticA)
-        return glm::dot(d, b.v) + glm::dot(b.w, p.angularB[row]);
+        return glm::dot(d, b.v) + glm::dot(b.w, angularOf(p.rB, d));
     else if constexpr (kStaticB)
-        return glm::dot(d, -a.v) - glm::dot(a.w, p.angularA[row]);
+        return glm::dot(d, -a.v) - glm::dot(a.w, angularOf(p.rA, d));
     else
-        return rowVelocity(a, b, p, row, d);
+        return rowVelocity(a, b, p, d);
 }
 
 template <bool kStaticA, bool kStaticB>
-inline void applyRowT(SolverBody& a, SolverBody& b, const ContactConstraint::Point& p, int row, const Vec3& d, Real j) {
+inline void applyRowT(SolverBody& a, SolverBody& b, const ContactConstraint::Point& p, const Vec3& d, Real j) {
     if constexpr (!kStaticA) {
         a.v -= (a.invMass * j) * d;
-        a.w -= j * p.inertiaA[row];
+        a.w -= j * inertiaOf(a, p.rA, d);
     }
     if constexpr (!kStaticB) {
         b.v += (b.invMass * j) * d;
-        b.w += j * p.inertiaB[row];
+        b.w += j * inertiaOf(b, p.rB, d);
     }
 }
 
@@ -114,12 +120,9 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
             const Vec3* directions[3] = {&c.normal, &c.tangent[0], &c.tangent[1]};
             Real masses[3];
             for (int row = 0; row < 3; ++row) {
-                p.angularA[row] = glm::cross(p.rA, *directions[row]);
-                p.angularB[row] = glm::cross(p.rB, *directions[row]);
-                p.inertiaA[row] = a.invInertia * p.angularA[row];
-                p.inertiaB[row] = b.invInertia * p.angularB[row];
-                const Real k = a.invMass + b.invMass + glm::dot(p.angularA[row], p.inertiaA[row]) +
-                               glm::dot(p.angularB[row], p.inertiaB[row]);
+                const Vec3 angularA = angularOf(p.rA, *directions[row]), angularB = angularOf(p.rB, *directions[row]);
+                const Vec3 inertiaA = a.invInertia * angularA, inertiaB = b.invInertia * angularB;
+                const Real k = a.invMass + b.invMass + glm::dot(angularA, inertiaA) + glm::dot(angularB, inertiaB);
                 masses[row] = k > 0.0 ? static_cast<float>(1.0 / k) : 0.0;
             }
             p.normalMass = masses[0];
@@ -302,9 +305,9 @@ void warmStartConstraint(const ContactConstraint& c, SolverBody& a, SolverBody& 
         const ContactConstraint::Point& p = c.points[c.order[k]]; // the batches' order
         if (p.normalImpulse == 0.0 && p.tangentImpulse[0] == 0.0 && p.tangentImpulse[1] == 0.0)
             continue; // a speculative point that never pushed: nothing to apply
-        applyRowT<kStaticA, kStaticB>(a, b, p, 0, c.normal, p.normalImpulse);
-        applyRowT<kStaticA, kStaticB>(a, b, p, 1, c.tangent[0], p.tangentImpulse[0]);
-        applyRowT<kStaticA, kStaticB>(a, b, p, 2, c.tangent[1], p.tangentImpulse[1]);
+        applyRowT<kStaticA, kStaticB>(a, b, p, c.normal, p.normalImpulse);
+        applyRowT<kStaticA, kStaticB>(a, b, p, c.tangent[0], p.tangentImpulse[0]);
+        applyRowT<kStaticA, kStaticB>(a, b, p, c.tangent[1], p.tangentImpulse[1]);
     }
 }
 
@@ -351,7 +354,7 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
             massScale = soft.massScale;
             impulseScale = soft.impulseScale;
         }
-        const Real vn = rowVelocityT<kStaticA, kStaticB>(a, b, p, 0, c.normal);
+        const Real vn = rowVelocityT<kStaticA, kStaticB>(a, b, p, c.normal);
         Real impulse = -p.normalMass * massScale * (vn + velocityBias) - impulseScale * p.normalImpulse;
         const Real newImpulse = std::max(p.normalImpulse + impulse, 0.0);
         impulse = newImpulse - p.normalImpulse;
@@ -363,7 +366,7 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
         if (impulse > 0.0 && p.maxNormalImpulse == 0.0)
             p.relativeVelocity += c.approachAcceleration * elapsed;
         p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
-        applyRowT<kStaticA, kStaticB>(a, b, p, 0, c.normal, impulse);
+        applyRowT<kStaticA, kStaticB>(a, b, p, c.normal, impulse);
     }
 
     if (!settings.friction || c.friction <= 0.0)
@@ -375,12 +378,12 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
             continue;
         const Real maxFriction = c.friction * p.normalImpulse;
         for (int t = 0; t < 2; ++t) {
-            const Real vt = rowVelocityT<kStaticA, kStaticB>(a, b, p, 1 + t, c.tangent[t]);
+            const Real vt = rowVelocityT<kStaticA, kStaticB>(a, b, p, c.tangent[t]);
             Real impulse = -p.tangentMass[t] * vt;
             const Real newImpulse = std::clamp(p.tangentImpulse[t] + impulse, -maxFriction, maxFriction);
             impulse = newImpulse - p.tangentImpulse[t];
             p.tangentImpulse[t] = newImpulse;
-            applyRowT<kStaticA, kStaticB>(a, b, p, 1 + t, c.tangent[t], impulse);
+            applyRowT<kStaticA, kStaticB>(a, b, p, c.tangent[t], impulse);
         }
     }
 }
@@ -447,13 +450,13 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
                 if (!bouncing[k])
                     continue;
                 ContactConstraint::Point& p = c.points[k];
-                const Real vn = rowVelocity(a, b, p, 0, c.normal);
+                const Real vn = rowVelocity(a, b, p, c.normal);
                 Real impulse = -p.normalMass * (vn - target[k]);
                 const Real newImpulse = std::max(p.normalImpulse + impulse, 0.0);
                 impulse = newImpulse - p.normalImpulse;
                 p.normalImpulse = newImpulse;
                 p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
-                applyRow(a, b, p, 0, c.normal, impulse);
+                applyRow(a, b, p, c.normal, impulse);
                 ++m_counters.restitutionRows;
                 largest = std::max(largest, std::abs(impulse));
                 total += newImpulse;

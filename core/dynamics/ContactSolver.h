@@ -61,11 +61,10 @@ struct ContactConstraint {
     struct Point {
         Vec3 rA{0.0}, rB{0.0};     // anchors relative to each centre of mass, world axes, at the step start
         Real baseSeparation = 0.0; // separation minus the anchor term, so dp/dq give the current separation
-        // Per row (normal, tangent 0, tangent 1): r x d for each body and that times its world inverse inertia,
-        // taken once in prepare(). A row then reads and applies velocities with dot products and scaled adds only:
-        // (w x r) . d = w . (r x d), and the angular change of an impulse j d is j I^-1 (r x d).
-        Vec3 angularA[3], angularB[3]; // rA x d, rB x d
-        Vec3 inertiaA[3], inertiaB[3]; // IA^-1 (rA x d), IB^-1 (rB x d)
+        // A row d reads and applies velocities through r x d for each body and that times its world inverse inertia:
+        // (w x r) . d = w . (r x d), and the angular change of an impulse j d is j I^-1 (r x d). They are worked out
+        // where a sweep needs them, not stored: 12 vectors a point were 70 % of a constraint's size, and prepare(),
+        // storeImpulses() and the restitution pass streamed them through the cache for every constraint.
         Real normalMass = 0.0;
         Real tangentMass[2] = {0.0, 0.0};
         Real normalImpulse = 0.0;
@@ -169,7 +168,7 @@ private:
     // Only what a point cannot recompute is stored: the sweeps stream every point of the group through the cache
     // (54k in large_pyramid) and were bound by memory when the points carried their rows' r x d and I^-1 (r x d)
     // (1.6 kB per four lanes). Those are recomputed from the anchors and the bodies' inverse inertia, the same
-    // numbers prepare() computes for ContactConstraint::Point. The separation and masses are floats (prepare() rounds
+    // numbers the scalar sweeps compute (ContactSolver.cpp). The separation and masses are floats (prepare() rounds
     // them for both kinds of sweep); anchors and impulses stay double. (Float anchors gave no speed-up beyond this
     // machine's noise.)
     struct BatchPoint {

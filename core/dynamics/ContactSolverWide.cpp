@@ -201,7 +201,7 @@ RL_LANES_INLINE void scatter(const Side& s, std::span<SolverBody> bodies, const 
 }
 
 // One row of one point along direction d: r x d for each body, and that times the body's inverse inertia, computed
-// as prepare() computes ContactConstraint::Point's angular and inertia terms.
+// as the scalar sweeps compute them (angularOf(), inertiaOf() in ContactSolver.cpp).
 struct Row {
     L3 d, angularA, angularB, inertiaA, inertiaB;
 };

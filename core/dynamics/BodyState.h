@@ -84,7 +84,8 @@ struct BodyState {
     std::vector<Vec3> smoothLinearVelocity;
     std::vector<Vec3> smoothDisplacement;
     std::vector<Vec3> smoothAngularVelocity;
-    std::vector<Quat> smoothRotation; // world-frame rotation over the substep
+    std::vector<Quat>
+        smoothRotation; // world-frame rotation over the substep (explicit Euler and RK4; see Integrator.cpp)
 
     // ---- bookkeeping ----
     std::vector<BodyInfo> info;

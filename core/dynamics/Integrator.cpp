@@ -39,13 +39,11 @@ void angularVelocityPhase(BodyState& state, uint32_t i, Real dt, Real c, Integra
             wb = gyroscopicMidpoint(wb, inertia, dt) * detail::implicitDecay(c, dt);
             w = q * wb;
         }
-        state.smoothRotation[i] = rotationFromVector(w * dt);
-        break;
+        break; // the rotation over the substep is rotationFromVector(w dt), taken in positionPhase()
     case Integrator::Verlet:
         wb = gyroscopicExplicit(wb, inertia, 0.5 * dt) * detail::explicitDecay(c, 0.5 * dt);
         w = q * wb;
-        state.smoothRotation[i] = rotationFromVector(w * dt);
-        break;
+        break; // likewise
     case Integrator::Rk4: {
         Quat qEnd = q;
         if (detail::isStiff(c, dt)) {
@@ -91,10 +89,14 @@ void positionPhase(BodyState& state, uint32_t i, Real dt, const Vec3& gravity, c
     Quat& q = state.orientation[i];
     Vec3& w = state.angularVelocity[i];
     const Quat before = q;
-    if (w == state.smoothAngularVelocity[i])
+    // Symplectic Euler and Verlet turn about the current w (changed by the solver or the clamp, or not), so their
+    // velocity phase leaves the rotation to this one: a body in contact then takes one sine and cosine per
+    // substep, not two. Explicit Euler (the old w) and RK4 (its own end orientation) use the velocity phase's.
+    const bool turnsWithW = integrator == Integrator::SymplecticEuler || integrator == Integrator::Verlet;
+    if (!turnsWithW && w == state.smoothAngularVelocity[i])
         q = glm::normalize(state.smoothRotation[i] * q);
     else
-        q = glm::normalize(rotationFromVector(w * dt) * q); // changed by the solver or the clamp: turn with it
+        q = glm::normalize(rotationFromVector(w * dt) * q);
     if (integrator == Integrator::ExplicitEuler) {
         // Explicit Euler's state is (q, w in the body frame): the new w keeps its body-frame components while the
         // body turns by the old w. (For the other schemes q turns about w itself, which leaves w as it is.)

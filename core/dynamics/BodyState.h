@@ -84,8 +84,8 @@ struct BodyState {
     std::vector<Vec3> smoothLinearVelocity;
     std::vector<Vec3> smoothDisplacement;
     std::vector<Vec3> smoothAngularVelocity;
-    std::vector<Quat>
-        smoothRotation; // world-frame rotation over the substep (explicit Euler and RK4; see Integrator.cpp)
+    // World-frame rotation over the substep; written for explicit Euler and RK4 only (see Integrator.cpp).
+    std::vector<Quat> smoothRotation;
 
     // ---- bookkeeping ----
     std::vector<BodyInfo> info;

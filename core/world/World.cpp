@@ -549,23 +549,21 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
             scratch.activeContacts.push_back(slot);
     }
     const int substeps = m_substeps * refinement;
-    std::vector<SolveScratch*> solved{&scratch};
+    std::span<SolveScratch> solved(&scratch, 1);
     if (splitByIslands()) {
         m_profile.count(Counter::IslandsSharedOut, 1);
         StageTimer timer(m_profile, Stage::Solve);
         m_team->run([&](int member) { solveSubsteps(m_memberScratch[static_cast<size_t>(member)], substeps, false); });
-        solved.clear();
-        for (SolveScratch& part : m_memberScratch)
-            solved.push_back(&part);
+        solved = m_memberScratch;
     } else {
         solveSubsteps(scratch, substeps, true);
     }
-    for (SolveScratch* part : solved) {
-        const ContactSolverCounters& sc = part->solver.counters();
+    for (SolveScratch& part : solved) {
+        const ContactSolverCounters& sc = part.solver.counters();
         m_solverCounters.normalRows += sc.normalRows;
         m_solverCounters.frictionRows += sc.frictionRows;
         m_solverCounters.restitutionRows += sc.restitutionRows;
-        for (ClampCounters& clamps : part->clamps) {
+        for (ClampCounters& clamps : part.clamps) {
             m_state.clampCounters.linear += clamps.linear;
             m_state.clampCounters.angular += clamps.angular;
             clamps = {};
@@ -585,6 +583,12 @@ bool World::splitByIslands() {
     if (!m_team || scratch.bodies.size() < kMinBodiesForTeam)
         return false;
     const size_t members = static_cast<size_t>(m_team->size());
+    // A group contact has a moving body of the group; its island is that body's.
+    const auto contactIsland = [&](uint32_t slot) {
+        const Contact& c = m_contactPool[slot];
+        return m_island[m_state.isMoving(c.bodyA) ? c.bodyA : c.bodyB];
+    };
+    // m_islandMember first holds each island's entry in load, then (below) its member.
     m_islandMember.resize(m_state.size());
     std::vector<std::pair<uint32_t, uint32_t>>& load = m_islandLoad; // (work, island root), one per island
     load.clear();
@@ -592,21 +596,20 @@ bool World::splitByIslands() {
         m_islandMember[m_island[i]] = kNoMember;
     const auto add = [&](uint32_t root) {
         if (m_islandMember[root] == kNoMember) {
-            m_islandMember[root] = static_cast<uint32_t>(load.size()); // the island's entry in load, for now
+            m_islandMember[root] = static_cast<uint32_t>(load.size());
             load.emplace_back(0, root);
         }
         ++load[m_islandMember[root]].first;
     };
     for (uint32_t i : scratch.bodies)
         add(m_island[i]);
-    for (uint32_t slot : scratch.activeContacts) {
-        const Contact& c = m_contactPool[slot];
-        add(m_island[m_state.isMoving(c.bodyA) ? c.bodyA : c.bodyB]);
-    }
+    for (uint32_t slot : scratch.activeContacts)
+        add(contactIsland(slot));
     std::sort(load.begin(), load.end(), [](const auto& l, const auto& r) {
         return l.first != r.first ? l.first > r.first : l.second < r.second;
     });
-    std::vector<uint64_t> total(members, 0);
+    std::vector<uint64_t>& total = m_memberLoad;
+    total.assign(members, 0);
     uint64_t all = 0;
     for (const auto& [work, root] : load) {
         const size_t least = static_cast<size_t>(std::min_element(total.begin(), total.end()) - total.begin());
@@ -624,11 +627,8 @@ bool World::splitByIslands() {
     }
     for (uint32_t i : scratch.bodies)
         m_memberScratch[m_islandMember[m_island[i]]].bodies.push_back(i);
-    for (uint32_t slot : scratch.activeContacts) {
-        const Contact& c = m_contactPool[slot];
-        m_memberScratch[m_islandMember[m_island[m_state.isMoving(c.bodyA) ? c.bodyA : c.bodyB]]]
-            .activeContacts.push_back(slot);
-    }
+    for (uint32_t slot : scratch.activeContacts)
+        m_memberScratch[m_islandMember[contactIsland(slot)]].activeContacts.push_back(slot);
     return true;
 }
 

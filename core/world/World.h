@@ -240,6 +240,7 @@ private:
     static constexpr uint32_t kNoMember = 0xffffffffu;
     std::vector<uint32_t> m_islandMember; // per island root: the member that solves it (splitByIslands())
     std::vector<std::pair<uint32_t, uint32_t>> m_islandLoad;
+    std::vector<uint64_t> m_memberLoad;
     ContactSolverCounters m_solverCounters;
     std::vector<Vec3> m_stepStartPosition;
     std::vector<Quat> m_stepStartOrientation;

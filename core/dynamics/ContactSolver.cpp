@@ -70,6 +70,63 @@ inline void applyRowT(SolverBody& a, SolverBody& b, const ContactConstraint::Poi
     }
 }
 
+// One manifold's constraint, for one step (see prepare()).
+void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, uint32_t indexB, Real friction,
+                     Real restitution, std::span<const SolverBody> bodies, std::span<const Vec3> centers,
+                     const ContactSolverSettings& settings) {
+    c.bodyA = indexA;
+    c.bodyB = indexB;
+    c.normal = m.normal;
+    tangentBasis(m.normal, c.tangent[0], c.tangent[1]);
+    c.friction = friction;
+    c.restitution = restitution;
+    c.pointCount = m.pointCount;
+    const SolverBody& a = bodies[c.bodyA];
+    const SolverBody& b = bodies[c.bodyB];
+    // Gravity acts on the bodies that can move (not on anchors and sleepers, entries with no inverse mass).
+    const Vec3 gA = a.invMass > 0.0 ? settings.gravity : Vec3(0.0);
+    const Vec3 gB = b.invMass > 0.0 ? settings.gravity : Vec3(0.0);
+    c.approachAcceleration = glm::dot(c.normal, gB - gA);
+    bool impact = false;
+    for (int k = 0; k < m.pointCount; ++k) {
+        const ContactPoint& mp = m.points[k];
+        ContactConstraint::Point& p = c.points[k];
+        // Both anchors sit at the world midpoint of the witness points, in world axes at the step start.
+        p.rA = mp.position - centers[c.bodyA];
+        p.rB = mp.position - centers[c.bodyB];
+        // The separation and the masses are rounded to float, as the batches store them (see BatchPoint).
+        p.baseSeparation = static_cast<float>(mp.separation - glm::dot(p.rB - p.rA, c.normal));
+        const Vec3* directions[3] = {&c.normal, &c.tangent[0], &c.tangent[1]};
+        Real masses[3];
+        for (int row = 0; row < 3; ++row) {
+            const Vec3 angularA = angularOf(p.rA, *directions[row]), angularB = angularOf(p.rB, *directions[row]);
+            const Vec3 inertiaA = a.invInertia * angularA, inertiaB = b.invInertia * angularB;
+            const Real k = a.invMass + b.invMass + glm::dot(angularA, inertiaA) + glm::dot(angularB, inertiaB);
+            masses[row] = k > 0.0 ? static_cast<float>(1.0 / k) : 0.0;
+        }
+        p.normalMass = masses[0];
+        p.tangentMass[0] = masses[1];
+        p.tangentMass[1] = masses[2];
+        p.normalImpulse = settings.warmStarting ? mp.normalImpulse : 0.0;
+
+        p.tangentImpulse[0] = settings.warmStarting ? mp.tangentImpulse[0] : 0.0;
+        p.tangentImpulse[1] = settings.warmStarting ? mp.tangentImpulse[1] : 0.0;
+        p.maxNormalImpulse = 0.0;
+        p.relativeVelocity = glm::dot(c.normal, relativeVelocity(a, b, p.rA, p.rB));
+        impact = impact || p.relativeVelocity < -settings.restitutionThreshold;
+    }
+    // An impact is solved deepest point first: a speculative point that is still apart must not push before the
+    // point that touches first has taken the blow. A UV sphere landing on its pole, solved in manifold order,
+    // let a ring vertex 1.9 mm up push first and bounced off spinning at 5.8 rad/s. Resting contacts keep the
+    // manifold's order: reordering them by sub-millimetre differences from step to step kept a pile of 1,000
+    // boxes creeping.
+    for (int k = 0; k < 4; ++k)
+        c.order[k] = static_cast<uint8_t>(k);
+    if (impact)
+        std::stable_sort(c.order, c.order + m.pointCount,
+                         [&](uint8_t l, uint8_t r) { return m.points[l].separation < m.points[r].separation; });
+}
+
 } // namespace
 
 Softness softness(Real omega, Real zeta, Real h) {
@@ -84,7 +141,8 @@ Softness softness(Real omega, Real zeta, Real h) {
 void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const uint32_t> solverIndexA,
                             std::span<const uint32_t> solverIndexB, std::span<const Real> friction,
                             std::span<const Real> restitution, std::span<const SolverBody> bodies,
-                            std::span<const Vec3> centers, Real h, const ContactSolverSettings& settings) {
+                            std::span<const Vec3> centers, Real h, const ContactSolverSettings& settings,
+                            std::span<const uint8_t> bodyPart, const ParallelFor& parallelFor) {
     m_settings = settings;
     m_inverseH = h > 0.0 ? 1.0 / h : 0.0;
     m_h = h;
@@ -92,62 +150,16 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
     m_soft = softness(2.0 * kPi * settings.contactHertz, settings.dampingRatio, h);
 
     m_constraints.resize(manifolds.size());
-    for (size_t i = 0; i < manifolds.size(); ++i) {
-        const Manifold& m = manifolds[i];
-        ContactConstraint& c = m_constraints[i];
-        c.bodyA = solverIndexA[i];
-        c.bodyB = solverIndexB[i];
-        c.normal = m.normal;
-        tangentBasis(m.normal, c.tangent[0], c.tangent[1]);
-        c.friction = friction[i];
-        c.restitution = restitution[i];
-        c.pointCount = m.pointCount;
-        const SolverBody& a = bodies[c.bodyA];
-        const SolverBody& b = bodies[c.bodyB];
-        // Gravity acts on the bodies that can move (not on anchors and sleepers, entries with no inverse mass).
-        const Vec3 gA = a.invMass > 0.0 ? settings.gravity : Vec3(0.0);
-        const Vec3 gB = b.invMass > 0.0 ? settings.gravity : Vec3(0.0);
-        c.approachAcceleration = glm::dot(c.normal, gB - gA);
-        bool impact = false;
-        for (int k = 0; k < m.pointCount; ++k) {
-            const ContactPoint& mp = m.points[k];
-            ContactConstraint::Point& p = c.points[k];
-            // Both anchors sit at the world midpoint of the witness points, in world axes at the step start.
-            p.rA = mp.position - centers[c.bodyA];
-            p.rB = mp.position - centers[c.bodyB];
-            // The separation and the masses are rounded to float, as the batches store them (see BatchPoint).
-            p.baseSeparation = static_cast<float>(mp.separation - glm::dot(p.rB - p.rA, c.normal));
-            const Vec3* directions[3] = {&c.normal, &c.tangent[0], &c.tangent[1]};
-            Real masses[3];
-            for (int row = 0; row < 3; ++row) {
-                const Vec3 angularA = angularOf(p.rA, *directions[row]), angularB = angularOf(p.rB, *directions[row]);
-                const Vec3 inertiaA = a.invInertia * angularA, inertiaB = b.invInertia * angularB;
-                const Real k = a.invMass + b.invMass + glm::dot(angularA, inertiaA) + glm::dot(angularB, inertiaB);
-                masses[row] = k > 0.0 ? static_cast<float>(1.0 / k) : 0.0;
-            }
-            p.normalMass = masses[0];
-            p.tangentMass[0] = masses[1];
-            p.tangentMass[1] = masses[2];
-            p.normalImpulse = settings.warmStarting ? mp.normalImpulse : 0.0;
-
-            p.tangentImpulse[0] = settings.warmStarting ? mp.tangentImpulse[0] : 0.0;
-            p.tangentImpulse[1] = settings.warmStarting ? mp.tangentImpulse[1] : 0.0;
-            p.maxNormalImpulse = 0.0;
-            p.relativeVelocity = glm::dot(c.normal, relativeVelocity(a, b, p.rA, p.rB));
-            impact = impact || p.relativeVelocity < -settings.restitutionThreshold;
-        }
-        // An impact is solved deepest point first: a speculative point that is still apart must not push before the
-        // point that touches first has taken the blow. A UV sphere landing on its pole, solved in manifold order,
-        // let a ring vertex 1.9 mm up push first and bounced off spinning at 5.8 rad/s. Resting contacts keep the
-        // manifold's order: reordering them by sub-millimetre differences from step to step kept a pile of 1,000
-        // boxes creeping.
-        for (int k = 0; k < 4; ++k)
-            c.order[k] = static_cast<uint8_t>(k);
-        if (impact)
-            std::stable_sort(c.order, c.order + m.pointCount,
-                             [&](uint8_t l, uint8_t r) { return m.points[l].separation < m.points[r].separation; });
-    }
-    scheduleLevels(bodies.size());
+    const auto setUp = [&](size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i)
+            setUpConstraint(m_constraints[i], manifolds[i], solverIndexA[i], solverIndexB[i], friction[i],
+                            restitution[i], bodies, centers, settings);
+    };
+    if (parallelFor)
+        parallelFor(manifolds.size(), setUp);
+    else
+        setUp(0, manifolds.size());
+    scheduleLevels(bodies.size(), bodyPart);
     buildBatches();
     m_sweepRows = {};
     for (const ContactConstraint& c : m_constraints) {
@@ -157,7 +169,7 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
     }
 }
 
-void ContactSolver::scheduleLevels(size_t bodyCount) {
+void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bodyPart) {
     // Level schedule of the sequential order: a constraint's level is one more than the highest level among the
     // earlier constraints (in manifold order) that share one of its moving bodies. Solving level by level then
     // performs, for every body, the same updates in the same order as solving the constraints one after the other,
@@ -166,20 +178,43 @@ void ContactSolver::scheduleLevels(size_t bodyCount) {
     // uses, reorders constraints that share a body: in a tower it solves every other contact first, which here let
     // the 20-cube tower's top drift 5.6 mm instead of 0.7 mm and the 210-cube pyramid's 9.5 mm instead of 0.24 mm.)
     // Entry 0 (anchors and sleepers) does not count: it is never written.
+    //
+    // With parts, the sequential order is segment by segment (see prepare()), and each segment's levels follow the
+    // previous segment's, so that a segment is a contiguous run of levels and of batches.
+    m_segment.resize(m_constraints.size());
+    for (size_t i = 0; i < m_constraints.size(); ++i) {
+        const ContactConstraint& c = m_constraints[i];
+        if (bodyPart.empty())
+            m_segment[i] = 0;
+        else if (c.bodyA == 0 || c.bodyB == 0)
+            m_segment[i] = bodyPart[c.bodyA == 0 ? c.bodyB : c.bodyA];
+        else
+            m_segment[i] = bodyPart[c.bodyA] == bodyPart[c.bodyB] ? bodyPart[c.bodyA] : kBoundarySegment;
+    }
     thread_local std::vector<uint32_t> nextLevel, levelOf;
     nextLevel.assign(bodyCount, 0);
     levelOf.resize(m_constraints.size());
     uint32_t levels = 0;
-    for (size_t i = 0; i < m_constraints.size(); ++i) {
-        const ContactConstraint& c = m_constraints[i];
-        const uint32_t level = std::max(c.bodyA != 0 ? nextLevel[c.bodyA] : 0u, c.bodyB != 0 ? nextLevel[c.bodyB] : 0u);
-        if (c.bodyA != 0)
-            nextLevel[c.bodyA] = level + 1;
-        if (c.bodyB != 0)
-            nextLevel[c.bodyB] = level + 1;
-        levelOf[i] = level;
-        levels = std::max(levels, level + 1);
+    const size_t segments = bodyPart.empty() ? 1 : kParts + 1;
+    for (size_t segment = 0; segment < segments; ++segment) {
+        m_segmentLevelStart[segment] = levels;
+        const uint32_t first = levels;
+        for (size_t i = 0; i < m_constraints.size(); ++i) {
+            if (m_segment[i] != segment)
+                continue;
+            const ContactConstraint& c = m_constraints[i];
+            const uint32_t level =
+                std::max({first, c.bodyA != 0 ? nextLevel[c.bodyA] : 0u, c.bodyB != 0 ? nextLevel[c.bodyB] : 0u});
+            if (c.bodyA != 0)
+                nextLevel[c.bodyA] = level + 1;
+            if (c.bodyB != 0)
+                nextLevel[c.bodyB] = level + 1;
+            levelOf[i] = level;
+            levels = std::max(levels, level + 1);
+        }
     }
+    for (size_t segment = segments; segment < kParts + 2; ++segment)
+        m_segmentLevelStart[segment] = levels;
     m_levelStart.assign(static_cast<size_t>(levels) + 1, 0);
     for (uint32_t level : levelOf)
         ++m_levelStart[static_cast<size_t>(level) + 1];
@@ -293,8 +328,10 @@ void ContactSolver::warmStartSequential(std::span<SolverBody> bodies) {
     m_elapsed += m_h;
     if (!m_settings.warmStarting)
         return;
-    for (size_t i = 0; i < m_constraints.size(); ++i)
-        warmStartOne(bodies, m_constraints[i]);
+    for (size_t segment = 0; segment <= kBoundarySegment; ++segment)
+        for (size_t i = 0; i < m_constraints.size(); ++i)
+            if (m_segment[i] == segment)
+                warmStartOne(bodies, m_constraints[i]);
 }
 
 namespace {
@@ -396,8 +433,10 @@ void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
 }
 
 void ContactSolver::solveSequential(std::span<SolverBody> bodies, bool useBias) {
-    for (ContactConstraint& c : m_constraints)
-        solveOne(bodies, c, useBias);
+    for (size_t segment = 0; segment <= kBoundarySegment; ++segment)
+        for (size_t i = 0; i < m_constraints.size(); ++i)
+            if (m_segment[i] == segment)
+                solveOne(bodies, m_constraints[i], useBias);
     countSweep();
 }
 

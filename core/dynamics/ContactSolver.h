@@ -6,6 +6,7 @@
 #include "math/Types.h"
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -85,13 +86,26 @@ struct ContactConstraint {
 
 class ContactSolver {
 public:
+    // Calls body(begin, end) for ranges that together cover [0, count) once each, on one thread or several.
+    using ParallelFor = std::function<void(size_t count, const std::function<void(size_t begin, size_t end)>& body)>;
+
     // Builds constraints from manifolds. solverIndexA/B map each manifold to SolverBody entries; friction and
     // restitution are the combined values per manifold; centers are the bodies' centres of mass at the step start
     // (indexed like bodies). h is the substep length.
+    //
+    // parallelFor, if given, runs the per-constraint part of the set-up split up (each constraint is set up alone).
+    //
+    // bodyPart, if given, puts each solver body in part 0 or 1 (entry 0, the static one, is in none). The constraints
+    // are then swept in three segments: those within part 0, those within part 1, and the boundary (a constraint
+    // between a body of each part), each segment in manifold order. The two parts share no moving body, so two
+    // threads can sweep them at once with no barrier between levels (segmentLevelBegin()).
     void prepare(std::span<const Manifold> manifolds, std::span<const uint32_t> solverIndexA,
                  std::span<const uint32_t> solverIndexB, std::span<const Real> friction,
                  std::span<const Real> restitution, std::span<const SolverBody> bodies, std::span<const Vec3> centers,
-                 Real h, const ContactSolverSettings& settings);
+                 Real h, const ContactSolverSettings& settings, std::span<const uint8_t> bodyPart = {},
+                 const ParallelFor& parallelFor = {});
+    static constexpr size_t kParts = 2;
+    static constexpr size_t kBoundarySegment = kParts; // segments 0 .. kParts - 1 are the parts
 
     // Called once per substep, after the velocities were integrated: starts the substep (the time since the step
     // began, which turns the approach speed recorded by prepare() into the speed at impact) and applies the
@@ -103,8 +117,9 @@ public:
     // warmStart() and solve() sweep the constraints level by level (see scheduleLevels()), four at a time: the
     // constraints of one level share no moving body, so they are packed into batches of four lanes
     // (ContactSolverWide.cpp) whose lanes run side by side in vector registers. Every body still receives the same
-    // updates in the same order as in the sequential sweep in manifold order (warmStartSequential(),
-    // solveSequential()), so the results are the same numbers, whatever the order of the batches within a level.
+    // updates in the same order as in the sequential sweep in manifold order, segment by segment
+    // (warmStartSequential(), solveSequential()), so the results are the same numbers, whatever the order of the
+    // batches within a level.
     //
     // The same, split up for several threads: batches begin..end within one level may run on different threads at
     // once. A substep is beginSubstep() once, then warmStartBatchRange() over every level, then sweeps of
@@ -115,6 +130,9 @@ public:
     size_t batchLevelBegin(size_t level) const { return m_batchLevelStart[level]; } // batch indices
     size_t batchLevelEnd(size_t level) const { return m_batchLevelStart[level + 1]; }
     std::span<const uint32_t> solveOrder() const { return m_solveOrder; } // constraint indices, level by level
+    // The levels of segment s (a part, or the boundary): [segmentLevelBegin(s), segmentLevelBegin(s + 1)). Without
+    // parts, segment 0 holds every level.
+    size_t segmentLevelBegin(size_t segment) const { return m_segmentLevelStart[segment]; }
     void beginSubstep() {
         m_elapsed += m_h;
         m_batchesAhead = true;
@@ -123,8 +141,8 @@ public:
     void solveBatchRange(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
     void countSweep();
 
-    // The reference: one constraint after the other in manifold order, with scalar arithmetic. Tests compare the
-    // batched sweeps with it. Use one kind of sweep per prepare(), not both.
+    // The reference: one constraint after the other in manifold order (segment by segment), with scalar arithmetic.
+    // Tests compare the batched sweeps with it. Use one kind of sweep per prepare(), not both.
     void warmStartSequential(std::span<SolverBody> bodies);
     void solveSequential(std::span<SolverBody> bodies, bool useBias);
 
@@ -183,13 +201,15 @@ private:
     void buildBatches();
     // Copies the batches' impulses and impact records back to m_constraints, if a batched sweep ran since.
     void syncFromBatches() const;
-    void scheduleLevels(size_t bodyCount);
+    void scheduleLevels(size_t bodyCount, std::span<const uint8_t> bodyPart);
     void warmStartOne(std::span<SolverBody> bodies, const ContactConstraint& c);
     void solveOne(std::span<SolverBody> bodies, ContactConstraint& c, bool useBias);
 
     mutable std::vector<ContactConstraint> m_constraints;
     std::vector<uint32_t> m_solveOrder; // constraint indices, level by level (grouped within a level: buildBatches())
-    std::vector<uint32_t> m_levelStart; // level k: m_solveOrder[m_levelStart[k], m_levelStart[k + 1])
+    std::vector<uint8_t> m_segment;     // per constraint: its part, or kBoundarySegment
+    size_t m_segmentLevelStart[kParts + 2] = {};
+    std::vector<uint32_t> m_levelStart;      // level k: m_solveOrder[m_levelStart[k], m_levelStart[k + 1])
     std::vector<uint32_t> m_batchLevelStart; // level k: m_batches[m_batchLevelStart[k], m_batchLevelStart[k + 1])
     std::vector<Batch> m_batches;
     std::vector<BatchPoint> m_batchPoints;

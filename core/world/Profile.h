@@ -42,6 +42,8 @@ enum class Counter {
     CcdHits,          // sweeps that stopped a body
     Steps,
     IslandsSharedOut, // solves whose islands a team of threads shared out (World::splitByIslands())
+    IslandsCut,       // islands cut in two parts for the solver, on any number of threads (World::cutIslands())
+    SolvedInParts,    // solves in which each of two threads swept one part (World::solveSubsteps())
     Count
 };
 inline constexpr int kCounterCount = static_cast<int>(Counter::Count);

@@ -559,6 +559,7 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
         solveSubsteps(scratch, substeps, true);
     }
     for (SolveScratch& part : solved) {
+        m_profile.count(Counter::IslandsCut, part.islandsCut);
         const ContactSolverCounters& sc = part.solver.counters();
         m_solverCounters.normalRows += sc.normalRows;
         m_solverCounters.frictionRows += sc.frictionRows;
@@ -632,6 +633,109 @@ bool World::splitByIslands() {
     return true;
 }
 
+void World::cutIslands(SolveScratch& scratch) const {
+    // Runs on a member of the team when islands are shared out, so it touches only the scratch and reads the state.
+    const std::vector<uint32_t>& group = scratch.bodies;
+    std::vector<uint8_t>& part = scratch.part;
+    part.assign(group.size() + 1, 0);
+    scratch.islandsCut = 0;
+    const size_t cut = m_tuning.cutIslandBodies;
+    if (cut == 0 || group.size() < cut)
+        return;
+    std::vector<uint32_t>& size = scratch.islandSize;
+    size.resize(m_state.size());
+    for (uint32_t i : group)
+        size[m_island[i]] = 0;
+    for (uint32_t i : group)
+        ++size[m_island[i]];
+    // The bodies of the islands to cut, island by island: (island root, position in the group).
+    std::vector<std::pair<uint32_t, uint32_t>>& cutBodies = scratch.cutBodies;
+    cutBodies.clear();
+    for (size_t k = 0; k < group.size(); ++k)
+        if (size[m_island[group[k]]] >= cut)
+            cutBodies.emplace_back(m_island[group[k]], static_cast<uint32_t>(k));
+    if (cutBodies.empty())
+        return;
+    std::sort(cutBodies.begin(), cutBodies.end());
+    // Each island is cut at the median of its centres along x, y or z (ties by position in the group, so the cut is
+    // one and the same on any machine and for any number of threads): along the axis that leaves the fewest
+    // constraints across the cut, which are swept after both parts. (The 5,050-cube pyramid cut across its height
+    // has 76-103 batches of four across, of ~4,000; cut down the middle, 198 batches of one, in a chain of levels.)
+    // An island with a body that is not finite (the world reports it) is left whole: the median would be undefined.
+    constexpr uint32_t kWhole = 3;
+    std::vector<std::array<uint32_t, 4>>& islands = scratch.cutIslands; // begin, end, best axis, its boundary
+    islands.clear();
+    for (size_t begin = 0; begin < cutBodies.size(); begin += size[cutBodies[begin].first]) {
+        const size_t end = begin + size[cutBodies[begin].first];
+        bool finite = true;
+        for (size_t e = begin; e < end; ++e) {
+            const Vec3& p = m_state.position[group[cutBodies[e].second]];
+            finite = finite && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+        }
+        islands.push_back({static_cast<uint32_t>(begin), static_cast<uint32_t>(end), finite ? 0u : kWhole,
+                           std::numeric_limits<uint32_t>::max()});
+    }
+    const auto split = [&](const std::array<uint32_t, 4>& island, int axis) {
+        const auto first = cutBodies.begin() + island[0], last = cutBodies.begin() + island[1];
+        const auto half = first + (last - first) / 2;
+        std::nth_element(first, half, last, [&](const auto& l, const auto& r) {
+            return std::make_pair(m_state.position[group[l.second]][axis], l.second) <
+                   std::make_pair(m_state.position[group[r.second]][axis], r.second);
+        });
+        for (auto e = first; e != last; ++e)
+            part[e->second + 1] = e < half ? 0 : 1;
+    };
+    std::vector<uint32_t>& islandOf = scratch.islandOf; // the island's entry in `islands`, per root
+    islandOf.resize(m_state.size());
+    for (uint32_t n = 0; n < islands.size(); ++n)
+        islandOf[cutBodies[islands[n][0]].first] = n;
+    std::vector<uint32_t>& boundary = scratch.boundaryCount;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (const auto& island : islands)
+            if (island[2] != kWhole)
+                split(island, axis);
+        boundary.assign(islands.size(), 0);
+        for (size_t c = 0; c < scratch.indexA.size(); ++c) {
+            const uint32_t a = scratch.indexA[c], b = scratch.indexB[c];
+            if (a != 0 && b != 0 && part[a] != part[b])
+                ++boundary[islandOf[m_island[group[a - 1]]]];
+        }
+        for (size_t n = 0; n < islands.size(); ++n)
+            if (islands[n][2] != kWhole && boundary[n] < islands[n][3])
+                islands[n] = {islands[n][0], islands[n][1], static_cast<uint32_t>(axis), boundary[n]};
+    }
+    size_t load[ContactSolver::kParts] = {0, 0};
+    for (const auto& island : islands) {
+        const size_t bodies = island[1] - island[0];
+        if (island[2] == kWhole) {
+            for (uint32_t e = island[0]; e < island[1]; ++e)
+                part[cutBodies[e].second + 1] = 0;
+            load[0] += bodies;
+            continue;
+        }
+        split(island, static_cast<int>(island[2]));
+        load[0] += bodies / 2;
+        load[1] += bodies - bodies / 2;
+        ++scratch.islandsCut;
+    }
+    // The other islands, whole, each to the part with fewer bodies so far, in the order of the group.
+    std::vector<uint8_t>& islandPart = scratch.islandPart;
+    islandPart.resize(m_state.size());
+    constexpr uint8_t kUnassigned = 0xff;
+    for (uint32_t i : group)
+        islandPart[m_island[i]] = kUnassigned;
+    for (size_t k = 0; k < group.size(); ++k) {
+        const uint32_t root = m_island[group[k]];
+        if (size[root] >= cut)
+            continue;
+        if (islandPart[root] == kUnassigned) {
+            islandPart[root] = load[0] <= load[1] ? 0 : 1;
+            load[islandPart[root]] += size[root];
+        }
+        part[k + 1] = islandPart[root];
+    }
+}
+
 void World::SolveScratch::clearContacts() {
     activeContacts.clear();
     manifolds.clear();
@@ -690,17 +794,56 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
     settings.contactHertz = 0.25 * m_fps * substeps; // a quarter of the substep rate (see ContactSolverSettings)
     ContactSolver& solver = scratch.solver;
     solver.resetCounters();
+    cutIslands(scratch);
+    // A big group's constraints are set up by the whole team (each one alone, so the results are the same).
+    ContactSolver::ParallelFor parallelFor;
+    if (mayUseTeam && m_team && group.size() >= kMinBodiesForTeam)
+        parallelFor = [&](size_t count, const std::function<void(size_t, size_t)>& body) {
+            m_team->run([&](int member) {
+                const auto [begin, end] = ThreadTeam::share(0, count, member, m_team->size());
+                body(begin, end);
+            });
+        };
     solver.prepare(scratch.manifolds, scratch.indexA, scratch.indexB, scratch.friction, scratch.restitution, bodies,
-                   scratch.centers, h, settings);
+                   scratch.centers, h, settings,
+                   scratch.islandsCut > 0 ? std::span<const uint8_t>(scratch.part) : std::span<const uint8_t>(),
+                   parallelFor);
 
     // The team solves the group together: bodies are split evenly for the integration, and each level of the
     // solver's schedule is split evenly for the contacts, with a barrier after every level. Every body sees the
     // same operations in the same order as on one thread, so the results are identical for any team size. A group
     // too small to pay for the barriers is solved by member 0 alone, and so is one whose levels are too narrow:
     // pyramid20's 590 constraints in 111 levels took 14 % longer on average on two threads than on one.
-    const size_t levelWidth = solver.levelCount() > 0 ? solver.solveOrder().size() / solver.levelCount() : 0;
+    //
+    // A group with an island cut in parts (cutIslands()) is solved part by part instead: member 0 sweeps every
+    // level of part 0 while member 1 sweeps part 1, with one barrier, then the constraints across the cut follow.
+    // The 5,050-cube pyramid has 591 levels, 376 of them with fewer than 32 constraints, which left one member
+    // waiting at most barriers.
+    constexpr size_t kBoundary = ContactSolver::kBoundarySegment;
+    const auto batchOfLevel = [&](size_t level) {
+        return level < solver.levelCount() ? solver.batchLevelBegin(level)
+                                           : (level > 0 ? solver.batchLevelEnd(level - 1) : 0);
+    };
+    const auto segmentBatches = [&](size_t segment) {
+        return std::make_pair(batchOfLevel(solver.segmentLevelBegin(segment)),
+                              batchOfLevel(solver.segmentLevelBegin(segment + 1)));
+    };
+    const auto levelWidthOf = [&](size_t firstLevel, size_t lastLevel) -> size_t {
+        return lastLevel > firstLevel
+                   ? (solver.levelEnd(lastLevel - 1) - solver.levelBegin(firstLevel)) / (lastLevel - firstLevel)
+                   : 0;
+    };
+    const size_t partBatches[2] = {segmentBatches(0).second - segmentBatches(0).first,
+                                   segmentBatches(1).second - segmentBatches(1).first};
+    const bool byParts = mayUseTeam && m_team && scratch.islandsCut > 0 && group.size() >= kMinBodiesForTeam &&
+                         4 * std::min(partBatches[0], partBatches[1]) >= partBatches[0] + partBatches[1];
+    const bool boundaryShared =
+        levelWidthOf(solver.segmentLevelBegin(kBoundary), solver.segmentLevelBegin(kBoundary + 1)) >= kMinLevelWidth;
+    const size_t levelWidth = levelWidthOf(0, solver.levelCount());
     const int members =
-        mayUseTeam && m_team && group.size() >= kMinBodiesForTeam && levelWidth >= kMinLevelWidth ? m_team->size() : 1;
+        byParts || (mayUseTeam && m_team && group.size() >= kMinBodiesForTeam && levelWidth >= kMinLevelWidth)
+            ? m_team->size()
+            : 1;
     scratch.clamps.resize(static_cast<size_t>(members));
     // The per-stage timers are not thread safe: for a team, or islands shared out (!mayUseTeam), the caller times the
     // whole solve.
@@ -708,6 +851,8 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
     std::optional<StageTimer> solveTimer;
     if (members > 1)
         solveTimer.emplace(m_profile, Stage::Solve);
+    if (byParts)
+        m_profile.count(Counter::SolvedInParts, 1);
     const size_t levels = solver.levelCount();
 
     auto job = [&](int member) {
@@ -719,11 +864,32 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
         };
         // One sweep of a solver pass over every level, each level's batches shared out. (A team of one sweeps all
         // batches through ContactSolver::solve(), with no barriers.)
-        const auto sweep = [&](auto&& range) {
-            for (size_t level = 0; level < levels; ++level) {
+        const auto levelByLevel = [&](size_t firstLevel, size_t lastLevel, auto&& range) {
+            for (size_t level = firstLevel; level < lastLevel; ++level) {
                 const auto [begin, end] =
                     ThreadTeam::share(solver.batchLevelBegin(level), solver.batchLevelEnd(level), member, members);
                 range(begin, end);
+                barrier();
+            }
+        };
+        const auto sweep = [&](auto&& range) {
+            if (!byParts) {
+                levelByLevel(0, levels, range);
+                return;
+            }
+            if (static_cast<size_t>(member) < ContactSolver::kParts) {
+                const auto [begin, end] = segmentBatches(static_cast<size_t>(member));
+                range(begin, end);
+            }
+            barrier();
+            const auto [begin, end] = segmentBatches(kBoundary);
+            if (begin == end)
+                return;
+            if (boundaryShared) {
+                levelByLevel(solver.segmentLevelBegin(kBoundary), solver.segmentLevelBegin(kBoundary + 1), range);
+            } else {
+                if (member == 0)
+                    range(begin, end);
                 barrier();
             }
         };

@@ -1,6 +1,7 @@
 // The contact solver's level schedule: constraints of one level share no moving body, and constraints that share one
 // keep their manifold order, so that solving level by level, on one thread or on several, does what the sequential
-// sweep does. Solving on a team of two gives bit-identical velocities.
+// sweep does; with parts, the same holds for the order part 0, part 1, boundary. Solving on a team of two gives
+// bit-identical velocities.
 #include "dynamics/ContactSolver.h"
 #include "world/ThreadTeam.h"
 
@@ -64,11 +65,27 @@ Problem makeProblem(int bodyCount, int count, bool chain, unsigned seed) {
     return p;
 }
 
-void prepare(ContactSolver& solver, const Problem& p) {
+void prepare(ContactSolver& solver, const Problem& p, std::span<const uint8_t> parts = {}) {
     ContactSolverSettings settings;
     settings.contactHertz = 120.0;
     solver.prepare(p.manifolds, p.indexA, p.indexB, p.friction, p.restitution, p.bodies, p.centers, 1.0 / 480.0,
-                   settings);
+                   settings, parts);
+}
+
+// Part 0 or 1 for each body: bodies 1..n/2 in part 0, the rest in part 1 (a cut through the middle of the ids).
+std::vector<uint8_t> halves(size_t bodyCount) {
+    std::vector<uint8_t> part(bodyCount + 1, 0);
+    for (size_t i = 1; i <= bodyCount; ++i)
+        part[i] = i <= bodyCount / 2 ? 0 : 1;
+    return part;
+}
+
+// The segment a constraint belongs to: the part of its moving bodies, or the boundary.
+size_t segmentOf(const Problem& p, const std::vector<uint8_t>& part, size_t c) {
+    const uint32_t a = p.indexA[c], b = p.indexB[c];
+    if (a == 0 || b == 0)
+        return part[a == 0 ? b : a];
+    return part[a] == part[b] ? part[a] : ContactSolver::kBoundarySegment;
 }
 
 bool sameBits(const Vec3& a, const Vec3& b) {
@@ -84,17 +101,25 @@ private slots:
         QTest::addColumn<int>("bodies");
         QTest::addColumn<int>("constraints");
         QTest::addColumn<bool>("chain");
-        QTest::newRow("tower of 40") << 40 << 40 << true;
-        QTest::newRow("200 random contacts among 60 bodies") << 60 << 200 << false;
-        QTest::newRow("2000 random contacts among 1000 bodies") << 1000 << 2000 << false;
+        QTest::addColumn<bool>("parts");
+        QTest::newRow("tower of 40") << 40 << 40 << true << false;
+        QTest::newRow("200 random contacts among 60 bodies") << 60 << 200 << false << false;
+        QTest::newRow("2000 random contacts among 1000 bodies") << 1000 << 2000 << false << false;
+        QTest::newRow("tower of 40 in two parts") << 40 << 40 << true << true;
+        QTest::newRow("2000 random contacts among 1000 bodies in two parts") << 1000 << 2000 << false << true;
     }
+    // With parts, the sequential order is part 0's constraints, part 1's, then the boundary's, each in manifold order,
+    // and each segment is a run of whole levels.
     void levelsKeepTheSequentialOrder() {
         QFETCH(int, bodies);
         QFETCH(int, constraints);
         QFETCH(bool, chain);
+        QFETCH(bool, parts);
         const Problem p = makeProblem(bodies, constraints, chain, 7);
+        const std::vector<uint8_t> part = halves(static_cast<size_t>(bodies));
         ContactSolver solver;
-        prepare(solver, p);
+        prepare(solver, p, parts ? std::span<const uint8_t>(part) : std::span<const uint8_t>());
+        const auto segment = [&](int c) { return parts ? segmentOf(p, part, static_cast<size_t>(c)) : size_t(0); };
         const auto order = solver.solveOrder();
         QCOMPARE(order.size(), size_t(constraints));
         std::vector<int> levelOf(static_cast<size_t>(constraints), -1);
@@ -112,17 +137,32 @@ private slots:
                 }
             }
         }
-        // Constraints that share a moving body are solved in manifold order.
+        // Constraints that share a moving body are solved in segment order, then manifold order.
         for (int i = 0; i < constraints; ++i)
             for (int j = i + 1; j < constraints; ++j) {
                 const bool share = (p.indexA[i] != 0 && (p.indexA[i] == p.indexA[j] || p.indexA[i] == p.indexB[j])) ||
                                    (p.indexB[i] != 0 && (p.indexB[i] == p.indexA[j] || p.indexB[i] == p.indexB[j]));
-                if (share)
+                if (share && segment(i) == segment(j))
                     QVERIFY(levelOf[i] < levelOf[j]);
+                else if (share)
+                    QCOMPARE(levelOf[i] < levelOf[j], segment(i) < segment(j));
             }
-        if (chain)
+        // Each segment is a run of whole levels, in order.
+        size_t counts[ContactSolver::kBoundarySegment + 1] = {};
+        for (int c = 0; c < constraints; ++c) {
+            const size_t s = segment(c);
+            ++counts[s];
+            QVERIFY(static_cast<size_t>(levelOf[c]) >= solver.segmentLevelBegin(s));
+            QVERIFY(static_cast<size_t>(levelOf[c]) < solver.segmentLevelBegin(s + 1));
+        }
+        QCOMPARE(solver.segmentLevelBegin(0), size_t(0));
+        QCOMPARE(solver.segmentLevelBegin(ContactSolver::kBoundarySegment + 1), solver.levelCount());
+        if (parts)
+            QVERIFY(counts[0] > 0 && counts[1] > 0 && counts[ContactSolver::kBoundarySegment] > 0);
+        if (chain && !parts)
             QCOMPARE(solver.levelCount(), size_t(constraints)); // a tower has no two independent contacts
-        qInfo("%d constraints in %zu levels", constraints, solver.levelCount());
+        qInfo("%d constraints in %zu levels; segments %zu, %zu and %zu", constraints, solver.levelCount(), counts[0],
+              counts[1], counts[2]);
     }
 
     // The batched sweeps (four constraints of a level side by side) give the numbers of the scalar sweep in manifold
@@ -132,15 +172,20 @@ private slots:
         QTest::addColumn<int>("bodies");
         QTest::addColumn<int>("constraints");
         QTest::addColumn<bool>("chain");
-        QTest::newRow("tower of 40") << 40 << 40 << true;
-        QTest::newRow("203 random contacts among 60 bodies") << 60 << 203 << false;
-        QTest::newRow("3001 random contacts among 1000 bodies") << 1000 << 3001 << false;
+        QTest::addColumn<bool>("parts");
+        QTest::newRow("tower of 40") << 40 << 40 << true << false;
+        QTest::newRow("203 random contacts among 60 bodies") << 60 << 203 << false << false;
+        QTest::newRow("3001 random contacts among 1000 bodies") << 1000 << 3001 << false << false;
+        QTest::newRow("3001 random contacts among 1000 bodies in two parts") << 1000 << 3001 << false << true;
     }
     void batchesGiveTheSequentialNumbers() {
         QFETCH(int, bodies);
         QFETCH(int, constraints);
         QFETCH(bool, chain);
+        QFETCH(bool, parts);
         Problem p = makeProblem(bodies, constraints, chain, 5);
+        const std::vector<uint8_t> part = halves(static_cast<size_t>(bodies));
+        const std::span<const uint8_t> partSpan = parts ? std::span<const uint8_t>(part) : std::span<const uint8_t>();
         std::mt19937 rng(3);
         std::uniform_real_distribution<Real> u(-0.01, 0.01);
         for (size_t i = 1; i < p.bodies.size(); ++i) {
@@ -149,8 +194,8 @@ private slots:
         }
         std::vector<SolverBody> sequential = p.bodies, batched = p.bodies;
         ContactSolver a, b;
-        prepare(a, p);
-        prepare(b, p);
+        prepare(a, p, partSpan);
+        prepare(b, p, partSpan);
         int impacts = 0;
         for (const ContactConstraint& c : a.constraints())
             impacts += c.order[0] != 0 || c.order[1] != 1 ? 1 : 0;
@@ -186,20 +231,43 @@ private slots:
         QVERIFY(pushing > 0);
     }
 
+    void aTeamOfTwoSolvesBitIdentically_data() {
+        QTest::addColumn<bool>("parts");
+        QTest::newRow("level by level") << false;
+        QTest::newRow("a part each, then the boundary") << true;
+    }
+    // Two threads split every level between barriers, or (with parts) each sweeps a part with no barrier between
+    // levels, then one sweeps the boundary. Either gives the bits of one thread sweeping the levels in order.
     void aTeamOfTwoSolvesBitIdentically() {
+        QFETCH(bool, parts);
         const Problem p = makeProblem(1000, 3000, false, 11);
+        const std::vector<uint8_t> part = halves(1000);
+        const std::span<const uint8_t> partSpan = parts ? std::span<const uint8_t>(part) : std::span<const uint8_t>();
         std::vector<SolverBody> one = p.bodies, two = p.bodies;
         ContactSolver a, b;
-        prepare(a, p);
-        prepare(b, p);
+        prepare(a, p, partSpan);
+        prepare(b, p, partSpan);
         for (int substep = 0; substep < 4; ++substep) {
             a.warmStart(one);
             a.solve(one, true);
             a.solve(one, false);
         }
+        const auto batchOfLevel = [&](size_t level) {
+            return level < b.levelCount() ? b.batchLevelBegin(level) : b.batchLevelEnd(b.levelCount() - 1);
+        };
         ThreadTeam team(2);
         team.run([&](int member) {
             const auto sweep = [&](auto&& range) {
+                if (parts) {
+                    range(batchOfLevel(b.segmentLevelBegin(static_cast<size_t>(member))),
+                          batchOfLevel(b.segmentLevelBegin(static_cast<size_t>(member) + 1)));
+                    team.barrier();
+                    if (member == 0)
+                        range(batchOfLevel(b.segmentLevelBegin(ContactSolver::kBoundarySegment)),
+                              batchOfLevel(b.segmentLevelBegin(ContactSolver::kBoundarySegment + 1)));
+                    team.barrier();
+                    return;
+                }
                 for (size_t level = 0; level < b.levelCount(); ++level) {
                     const auto [begin, end] =
                         ThreadTeam::share(b.batchLevelBegin(level), b.batchLevelEnd(level), member, 2);

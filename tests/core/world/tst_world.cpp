@@ -203,19 +203,29 @@ private slots:
         QCOMPARE(hashes[0], hashes[2]);
     }
 
-    // One pile of 400 boxes is one island: the two threads split each level of the solver's schedule.
+    // One pile of 400 boxes is one island. It is cut in two parts for the solver on one thread and on two
+    // (World::cutIslands()), and the two threads each sweep a part; while the falling boxes are in smaller islands,
+    // the threads split each level of the solver's schedule or share the islands out.
     void oneBigIslandOnTwoThreadsGivesIdenticalResults() {
-        uint64_t hashes[2];
+        uint64_t hashes[2], cut[2], inParts[2];
         for (int run = 0; run < 2; ++run) {
             WorldOptions options;
             options.threads = run + 1;
             World w = makeWorld(scenes::randomBoxes(400, 3), options);
             for (int i = 0; i < 150; ++i)
                 w.step();
-            QVERIFY(w.diagnostics().awakeBodies > 128); // still one big awake pile
+            QVERIFY(w.diagnostics().awakeBodies > 256); // still one big awake pile
             hashes[run] = hashState(w);
+            cut[run] = w.profile().counter(Counter::IslandsCut);
+            inParts[run] = w.profile().counter(Counter::SolvedInParts);
         }
         QCOMPARE(hashes[1], hashes[0]);
+        QVERIFY(cut[0] > 0);
+        QCOMPARE(cut[1], cut[0]);
+        QCOMPARE(inParts[0], uint64_t(0));
+        QVERIFY(inParts[1] > 0);
+        qInfo("400 boxes, 150 steps: an island cut in %llu steps, solved a part per thread in %llu",
+              static_cast<unsigned long long>(cut[0]), static_cast<unsigned long long>(inParts[1]));
     }
 
     void islandsSolvedOnTwoThreadsGiveIdenticalResults() {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace rl {
@@ -133,6 +134,11 @@ public:
     // The levels of segment s (a part, or the boundary): [segmentLevelBegin(s), segmentLevelBegin(s + 1)). Without
     // parts, segment 0 holds every level.
     size_t segmentLevelBegin(size_t segment) const { return m_segmentLevelStart[segment]; }
+    // The batches of segment s: [first, second), for sweeping a whole part with warmStartBatchRange() and
+    // solveBatchRange().
+    std::pair<size_t, size_t> segmentBatches(size_t segment) const {
+        return {m_batchLevelStart[m_segmentLevelStart[segment]], m_batchLevelStart[m_segmentLevelStart[segment + 1]]};
+    }
     void beginSubstep() {
         m_elapsed += m_h;
         m_batchesAhead = true;

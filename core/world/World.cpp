@@ -662,21 +662,21 @@ void World::cutIslands(SolveScratch& scratch) const {
     // constraints across the cut, which are swept after both parts. (The 5,050-cube pyramid cut across its height
     // has 76-103 batches of four across, of ~4,000; cut down the middle, 198 batches of one, in a chain of levels.)
     // An island with a body that is not finite (the world reports it) is left whole: the median would be undefined.
-    constexpr uint32_t kWhole = 3;
-    std::vector<std::array<uint32_t, 4>>& islands = scratch.cutIslands; // begin, end, best axis, its boundary
+    std::vector<SolveScratch::CutIsland>& islands = scratch.cutIslands;
     islands.clear();
     for (size_t begin = 0; begin < cutBodies.size(); begin += size[cutBodies[begin].first]) {
-        const size_t end = begin + size[cutBodies[begin].first];
-        bool finite = true;
-        for (size_t e = begin; e < end; ++e) {
+        SolveScratch::CutIsland island;
+        island.begin = static_cast<uint32_t>(begin);
+        island.end = static_cast<uint32_t>(begin + size[cutBodies[begin].first]);
+        island.boundary = std::numeric_limits<uint32_t>::max();
+        for (uint32_t e = island.begin; e < island.end; ++e) {
             const Vec3& p = m_state.position[group[cutBodies[e].second]];
-            finite = finite && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+            island.whole = island.whole || !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z);
         }
-        islands.push_back({static_cast<uint32_t>(begin), static_cast<uint32_t>(end), finite ? 0u : kWhole,
-                           std::numeric_limits<uint32_t>::max()});
+        islands.push_back(island);
     }
-    const auto split = [&](const std::array<uint32_t, 4>& island, int axis) {
-        const auto first = cutBodies.begin() + island[0], last = cutBodies.begin() + island[1];
+    const auto split = [&](const SolveScratch::CutIsland& island, int axis) {
+        const auto first = cutBodies.begin() + island.begin, last = cutBodies.begin() + island.end;
         const auto half = first + (last - first) / 2;
         std::nth_element(first, half, last, [&](const auto& l, const auto& r) {
             return std::make_pair(m_state.position[group[l.second]][axis], l.second) <
@@ -688,11 +688,11 @@ void World::cutIslands(SolveScratch& scratch) const {
     std::vector<uint32_t>& islandOf = scratch.islandOf; // the island's entry in `islands`, per root
     islandOf.resize(m_state.size());
     for (uint32_t n = 0; n < islands.size(); ++n)
-        islandOf[cutBodies[islands[n][0]].first] = n;
+        islandOf[cutBodies[islands[n].begin].first] = n;
     std::vector<uint32_t>& boundary = scratch.boundaryCount;
     for (int axis = 0; axis < 3; ++axis) {
-        for (const auto& island : islands)
-            if (island[2] != kWhole)
+        for (const SolveScratch::CutIsland& island : islands)
+            if (!island.whole)
                 split(island, axis);
         boundary.assign(islands.size(), 0);
         for (size_t c = 0; c < scratch.indexA.size(); ++c) {
@@ -701,19 +701,21 @@ void World::cutIslands(SolveScratch& scratch) const {
                 ++boundary[islandOf[m_island[group[a - 1]]]];
         }
         for (size_t n = 0; n < islands.size(); ++n)
-            if (islands[n][2] != kWhole && boundary[n] < islands[n][3])
-                islands[n] = {islands[n][0], islands[n][1], static_cast<uint32_t>(axis), boundary[n]};
+            if (boundary[n] < islands[n].boundary) {
+                islands[n].axis = axis;
+                islands[n].boundary = boundary[n];
+            }
     }
     size_t load[ContactSolver::kParts] = {0, 0};
-    for (const auto& island : islands) {
-        const size_t bodies = island[1] - island[0];
-        if (island[2] == kWhole) {
-            for (uint32_t e = island[0]; e < island[1]; ++e)
+    for (const SolveScratch::CutIsland& island : islands) {
+        const size_t bodies = island.end - island.begin;
+        if (island.whole) {
+            for (uint32_t e = island.begin; e < island.end; ++e)
                 part[cutBodies[e].second + 1] = 0;
             load[0] += bodies;
             continue;
         }
-        split(island, static_cast<int>(island[2]));
+        split(island, island.axis);
         load[0] += bodies / 2;
         load[1] += bodies - bodies / 2;
         ++scratch.islandsCut;
@@ -820,21 +822,16 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
     // The 5,050-cube pyramid has 591 levels, 376 of them with fewer than 32 constraints, which left one member
     // waiting at most barriers.
     constexpr size_t kBoundary = ContactSolver::kBoundarySegment;
-    const auto batchOfLevel = [&](size_t level) {
-        return level < solver.levelCount() ? solver.batchLevelBegin(level)
-                                           : (level > 0 ? solver.batchLevelEnd(level - 1) : 0);
-    };
-    const auto segmentBatches = [&](size_t segment) {
-        return std::make_pair(batchOfLevel(solver.segmentLevelBegin(segment)),
-                              batchOfLevel(solver.segmentLevelBegin(segment + 1)));
-    };
     const auto levelWidthOf = [&](size_t firstLevel, size_t lastLevel) -> size_t {
         return lastLevel > firstLevel
                    ? (solver.levelEnd(lastLevel - 1) - solver.levelBegin(firstLevel)) / (lastLevel - firstLevel)
                    : 0;
     };
-    const size_t partBatches[2] = {segmentBatches(0).second - segmentBatches(0).first,
-                                   segmentBatches(1).second - segmentBatches(1).first};
+    const auto batchCount = [&](size_t segment) {
+        const auto [begin, end] = solver.segmentBatches(segment);
+        return end - begin;
+    };
+    const size_t partBatches[2] = {batchCount(0), batchCount(1)};
     const bool byParts = mayUseTeam && m_team && scratch.islandsCut > 0 && group.size() >= kMinBodiesForTeam &&
                          4 * std::min(partBatches[0], partBatches[1]) >= partBatches[0] + partBatches[1];
     const bool boundaryShared =
@@ -878,11 +875,11 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
                 return;
             }
             if (static_cast<size_t>(member) < ContactSolver::kParts) {
-                const auto [begin, end] = segmentBatches(static_cast<size_t>(member));
+                const auto [begin, end] = solver.segmentBatches(static_cast<size_t>(member));
                 range(begin, end);
             }
             barrier();
-            const auto [begin, end] = segmentBatches(kBoundary);
+            const auto [begin, end] = solver.segmentBatches(kBoundary);
             if (begin == end)
                 return;
             if (boundaryShared) {

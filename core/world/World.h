@@ -14,7 +14,6 @@
 #include "world/Profile.h"
 #include "world/ThreadTeam.h"
 
-#include <array>
 #include <memory>
 #include <optional>
 #include <span>
@@ -75,8 +74,8 @@ struct WorldTuning {
     // An island of at least this many moving bodies is cut in two parts at the median of its centres along x, y or
     // z, whatever the number of threads: the solver sweeps the constraints within each part, then those across the
     // cut (ContactSolver::prepare()), so two threads can each take a part (World::cutIslands()). 0 never cuts.
-    // 1,000-box piles at rest after 10 s (seeds 1-72, measured 2026-11-24 with the widest spread as the axis): 68
-    // of 72 uncut, 67 cut from 256 bodies, 64 cut from 128. Ramps' pile (245-300 bodies) is rarely cut.
+    // 1,000-box piles at rest after 10 s (seeds 1-72, measured 2026-11-24): 68 of 72 uncut, 69 as cut now; with the
+    // widest spread as the axis, 67 cut from 256 bodies and 64 from 128. Ramps' pile (245-300 bodies) is not cut.
     size_t cutIslandBodies = 256;
 };
 
@@ -184,9 +183,15 @@ private:
         std::vector<uint32_t> islandSize;  // per island root (cutIslands(), entries of the group's roots only)
         std::vector<uint8_t> islandPart;   // likewise
         std::vector<std::pair<uint32_t, uint32_t>> cutBodies; // (island root, position in bodies)
-        std::vector<std::array<uint32_t, 4>> cutIslands;      // their runs in cutBodies, the axis and its boundary
-        std::vector<uint32_t> boundaryCount;                  // per cut island, for one axis
-        std::vector<uint32_t> islandOf;                       // per root of a cut island: its entry in cutIslands
+        struct CutIsland {
+            uint32_t begin = 0, end = 0; // its run in cutBodies
+            int axis = 0;                // the axis of the cut so far
+            uint32_t boundary = 0;       // constraints across the cut along that axis
+            bool whole = false;          // a body is not finite: left uncut
+        };
+        std::vector<CutIsland> cutIslands;
+        std::vector<uint32_t> boundaryCount; // per cut island, for one axis
+        std::vector<uint32_t> islandOf;      // per root of a cut island: its entry in cutIslands
         void clearContacts();
     };
     // The group of `scratch` through `substeps` substeps, then restitution; on the team when mayUseTeam is set and

@@ -252,19 +252,17 @@ private slots:
             a.solve(one, true);
             a.solve(one, false);
         }
-        const auto batchOfLevel = [&](size_t level) {
-            return level < b.levelCount() ? b.batchLevelBegin(level) : b.batchLevelEnd(b.levelCount() - 1);
-        };
         ThreadTeam team(2);
         team.run([&](int member) {
             const auto sweep = [&](auto&& range) {
                 if (parts) {
-                    range(batchOfLevel(b.segmentLevelBegin(static_cast<size_t>(member))),
-                          batchOfLevel(b.segmentLevelBegin(static_cast<size_t>(member) + 1)));
+                    const auto [begin, end] = b.segmentBatches(static_cast<size_t>(member));
+                    range(begin, end);
                     team.barrier();
-                    if (member == 0)
-                        range(batchOfLevel(b.segmentLevelBegin(ContactSolver::kBoundarySegment)),
-                              batchOfLevel(b.segmentLevelBegin(ContactSolver::kBoundarySegment + 1)));
+                    if (member == 0) {
+                        const auto [first, last] = b.segmentBatches(ContactSolver::kBoundarySegment);
+                        range(first, last);
+                    }
                     team.barrier();
                     return;
                 }

@@ -31,6 +31,7 @@ std::string_view stageName(Stage stage); // "update_broadphase", "find_pairs", .
 
 enum class Counter {
     Pairs,            // broadphase pairs
+    PairsTested,      // pairs whose shapes were tested: a body moves and the tight boxes are within the margin
     Manifolds,        // touching manifolds
     ContactPoints,    // manifold points
     NormalRows,       // normal rows solved (points x passes)

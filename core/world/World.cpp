@@ -222,8 +222,11 @@ void World::refreshTransforms() {
     // Bodies move only in solve() and CCD, both after the narrowphase, so these stay valid for the whole of
     // broadphase and narrowphase. Every body, not only the moving ones: one that fell asleep last step moved first.
     m_transforms.resize(m_state.size());
-    for (uint32_t i = 0; i < m_state.size(); ++i)
+    m_bounds.resize(m_state.size());
+    for (uint32_t i = 0; i < m_state.size(); ++i) {
         m_transforms[i] = transform(i);
+        m_bounds[i] = m_shapes[i].worldBounds(m_transforms[i]);
+    }
 }
 
 void World::updateBroadphase() {
@@ -234,7 +237,7 @@ void World::updateBroadphase() {
         // The proxy must cover everything this step's speculative contacts may need: the box swept by this
         // step's motion, grown by the speculative distance. The tree only reinserts when that leaves the fat box,
         // so a body that turns around (a ball at the top of its bounce) still finds the floor in time.
-        const Aabb tight = m_shapes[i].worldBounds(m_transforms[i]);
+        const Aabb& tight = m_bounds[i];
         const Vec3 motion = m_state.linearVelocity[i] * dt;
         const Vec3 grow(m_tuning.speculativeDistance + glm::length(m_state.angularVelocity[i]) * m_radius[i] * dt);
         Aabb swept{glm::min(tight.min, tight.min + motion) - grow, glm::max(tight.max, tight.max + motion) + grow};
@@ -247,11 +250,13 @@ void World::findPairs() {
     m_broadPhase.updatePairs();
     const auto pairs = m_broadPhase.pairs();
     // Most steps the pair list is the one we already hold; then there is nothing to merge.
+    // The bodies of each contact are kept beside the slot list (m_pairBodies), so neither this test nor the merge
+    // below reads the contacts themselves.
+    const auto sameBodies = [](const BroadPhasePair& p, const std::pair<uint32_t, uint32_t>& bodies) {
+        return p.idA == bodies.first && p.idB == bodies.second;
+    };
     const bool unchanged =
-        pairs.size() == m_pairContacts.size() &&
-        std::equal(pairs.begin(), pairs.end(), m_pairContacts.begin(), [&](const BroadPhasePair& p, uint32_t slot) {
-            return p.idA == m_contactPool[slot].bodyA && p.idB == m_contactPool[slot].bodyB;
-        });
+        pairs.size() == m_pairBodies.size() && std::equal(pairs.begin(), pairs.end(), m_pairBodies.begin(), sameBodies);
     if (unchanged) {
         m_profile.count(Counter::Pairs, m_pairContacts.size());
         return;
@@ -263,16 +268,11 @@ void World::findPairs() {
     std::vector<uint32_t>& next = m_nextPairContacts;
     next.clear();
     next.reserve(pairs.size());
-    const auto before = [&](uint32_t slot, const BroadPhasePair& p) {
-        const Contact& c = m_contactPool[slot];
-        return std::make_pair(c.bodyA, c.bodyB) < std::make_pair(p.idA, p.idB);
-    };
     size_t old = 0;
     for (const BroadPhasePair& p : pairs) {
-        while (old < m_pairContacts.size() && before(m_pairContacts[old], p))
+        while (old < m_pairContacts.size() && m_pairBodies[old] < std::make_pair(p.idA, p.idB))
             m_freeContacts.push_back(m_pairContacts[old++]);
-        if (old < m_pairContacts.size() && m_contactPool[m_pairContacts[old]].bodyA == p.idA &&
-            m_contactPool[m_pairContacts[old]].bodyB == p.idB) {
+        if (old < m_pairContacts.size() && sameBodies(p, m_pairBodies[old])) {
             next.push_back(m_pairContacts[old++]);
             continue;
         }
@@ -287,30 +287,39 @@ void World::findPairs() {
         if (m_freeContacts.empty()) {
             slot = static_cast<uint32_t>(m_contactPool.size());
             m_contactPool.push_back(c);
+            m_contactTouching.push_back(0);
         } else {
             slot = m_freeContacts.back();
             m_freeContacts.pop_back();
             m_contactPool[slot] = c;
+            m_contactTouching[slot] = 0;
         }
         next.push_back(slot);
     }
     while (old < m_pairContacts.size())
         m_freeContacts.push_back(m_pairContacts[old++]);
     std::swap(m_pairContacts, next);
+    m_pairBodies.resize(pairs.size());
+    for (size_t i = 0; i < pairs.size(); ++i)
+        m_pairBodies[i] = {pairs[i].idA, pairs[i].idB};
     m_profile.count(Counter::Pairs, m_pairContacts.size());
 }
 
-void World::collidePair(Contact& c) {
-    const uint32_t a = c.bodyA, b = c.bodyB;
+Real World::pairMargin(uint32_t a, uint32_t b) const {
     const Real dt = 1.0 / m_fps;
     // Speculative margin: the base distance plus how far the two surfaces can approach within this step, so a
     // falling body meets its contact before it gets there rather than after it has sunk in.
     const Vec3 relative = m_state.linearVelocity[b] - m_state.linearVelocity[a];
     const Real spin =
         glm::length(m_state.angularVelocity[a]) * m_radius[a] + glm::length(m_state.angularVelocity[b]) * m_radius[b];
-    Real margin = m_tuning.speculativeDistance + (glm::length(relative) + spin) * dt;
+    const Real margin = m_tuning.speculativeDistance + (glm::length(relative) + spin) * dt;
     // Beyond the bodies' own size a speculative contact is meaningless; CCD takes over there.
-    margin = std::min(margin, m_tuning.speculativeDistance + std::max(m_minExtent[a], m_minExtent[b]));
+    return std::min(margin, m_tuning.speculativeDistance + std::max(m_minExtent[a], m_minExtent[b]));
+}
+
+void World::collidePair(uint32_t slot, Real margin) {
+    Contact& c = m_contactPool[slot];
+    const uint32_t a = c.bodyA, b = c.bodyB;
 
     const Transform& xfA = m_transforms[a];
     const Transform& xfB = m_transforms[b];
@@ -367,6 +376,7 @@ void World::collidePair(Contact& c) {
     // Points that persist (same features, or nearly the same place) keep their impulses for warm starting.
     warmStart(c.manifold, fresh);
     c.manifold = fresh;
+    m_contactTouching[slot] = fresh.pointCount > 0 ? 1 : 0;
     c.cachedOffset = offset;
     c.cachedRotation = rotation;
     c.cachedNormal = xfA.rotateInverse(fresh.normal);
@@ -375,11 +385,36 @@ void World::collidePair(Contact& c) {
 
 void World::narrowphase() {
     // Pairs where neither body moves keep their manifold (both asleep, or asleep against an anchor).
+    // A pair whose tight boxes are apart by more than its margin along some axis has no contact: the shapes are at
+    // least that far apart. The fat boxes of the broadphase overlap far more often than the shapes come within the
+    // margin (over ramps.obj's first 600 frames, 12 % of the pairs are tested), so this test, on the compact list of
+    // pair bodies and the bodies' boxes, spares most pairs a visit to their contact, some 700 bytes each. (The stage
+    // went from 368-394 ms to 297-308 ms over the first 240 frames, three interleaved runs; frames bit-identical.)
     std::vector<uint32_t>& active = m_narrowActive;
+    std::vector<Real>& margins = m_narrowMargins;
     active.clear();
-    for (uint32_t slot : m_pairContacts)
-        if (m_state.isMoving(m_contactPool[slot].bodyA) || m_state.isMoving(m_contactPool[slot].bodyB))
-            active.push_back(slot);
+    margins.clear();
+    for (size_t i = 0; i < m_pairContacts.size(); ++i) {
+        const auto [a, b] = m_pairBodies[i];
+        if (!m_state.isMoving(a) && !m_state.isMoving(b))
+            continue;
+        const Real margin = pairMargin(a, b);
+        const Aabb &boxA = m_bounds[a], &boxB = m_bounds[b];
+        const Vec3 gap = glm::max(boxB.min - boxA.max, boxA.min - boxB.max);
+        if (std::max({gap.x, gap.y, gap.z}) > margin) {
+            const uint32_t slot = m_pairContacts[i];
+            if (m_contactTouching[slot]) {
+                Contact& c = m_contactPool[slot];
+                c.manifold.pointCount = 0;
+                c.cachedMargin = -1.0;
+                m_contactTouching[slot] = 0;
+            }
+            continue;
+        }
+        active.push_back(m_pairContacts[i]);
+        margins.push_back(margin);
+    }
+    m_profile.count(Counter::PairsTested, active.size());
 
     // The contacts sit in the pool in no useful order for the cache (about 700 bytes each, some 6,000 pairs in
     // ramps.obj): a few pairs ahead, every line of the next contact is fetched while this one is computed. (Over
@@ -392,7 +427,7 @@ void World::narrowphase() {
                 for (size_t line = 0; line < sizeof(Contact); line += 64)
                     __builtin_prefetch(ahead + line);
             }
-            collidePair(m_contactPool[active[i]]);
+            collidePair(active[i], margins[i]);
         }
     };
 
@@ -410,12 +445,16 @@ void World::narrowphase() {
         collideRange(0, active.size());
     }
 
+    // From here on only touching contacts matter: list them once, in pair order.
+    m_touchingContacts.clear();
+    for (uint32_t slot : m_pairContacts)
+        if (m_contactTouching[slot])
+            m_touchingContacts.push_back(slot);
+
     // A touching contact between an awake body and a sleeping one wakes the sleeper's island.
     if (m_effects.effects.has(Effect::Sleeping)) {
-        for (uint32_t slot : m_pairContacts) {
+        for (uint32_t slot : m_touchingContacts) {
             const Contact& c = m_contactPool[slot];
-            if (c.manifold.pointCount == 0)
-                continue;
             const bool movingA = m_state.isMoving(c.bodyA), movingB = m_state.isMoving(c.bodyB);
             if (movingA && !movingB && !m_state.isStatic(c.bodyB))
                 wakeIsland(c.bodyB);
@@ -423,13 +462,10 @@ void World::narrowphase() {
                 wakeIsland(c.bodyA);
         }
     }
-    uint64_t manifolds = 0, points = 0;
-    for (uint32_t slot : m_pairContacts) {
-        const Contact& c = m_contactPool[slot];
-        manifolds += c.manifold.pointCount > 0 ? 1 : 0;
-        points += static_cast<uint64_t>(c.manifold.pointCount);
-    }
-    m_profile.count(Counter::Manifolds, manifolds);
+    uint64_t points = 0;
+    for (uint32_t slot : m_touchingContacts)
+        points += static_cast<uint64_t>(m_contactPool[slot].manifold.pointCount);
+    m_profile.count(Counter::Manifolds, m_touchingContacts.size());
     m_profile.count(Counter::ContactPoints, points);
 }
 
@@ -460,9 +496,9 @@ void World::wakeAll() {
 
 void World::buildIslands() {
     std::iota(m_island.begin(), m_island.end(), 0u);
-    for (uint32_t slot : m_pairContacts) {
+    for (uint32_t slot : m_touchingContacts) {
         const Contact& c = m_contactPool[slot];
-        if (c.manifold.pointCount == 0 || m_state.isStatic(c.bodyA) || m_state.isStatic(c.bodyB))
+        if (m_state.isStatic(c.bodyA) || m_state.isStatic(c.bodyB))
             continue; // anchors do not join islands: a floor would glue the whole scene into one
         unite(m_island, c.bodyA, c.bodyB);
     }
@@ -541,10 +577,8 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
     // and so a refinement, so a contact never straddles two groups.)
     const auto inGroup = [&](uint32_t body) { return m_state.isMoving(body) && m_refinement[body] == refinement; };
     scratch.clearContacts();
-    for (uint32_t slot : m_pairContacts) {
+    for (uint32_t slot : m_touchingContacts) {
         const Contact& contact = m_contactPool[slot];
-        if (contact.manifold.pointCount == 0)
-            continue;
         if (inGroup(contact.bodyA) || inGroup(contact.bodyB))
             scratch.activeContacts.push_back(slot);
     }
@@ -1064,7 +1098,7 @@ FrameDiagnostics World::diagnostics() const {
         d.potentialEnergy -= m_state.info[i].mass * glm::dot(m_gravity, m_state.position[i]);
         d.awakeBodies += m_state.isAwake(i) ? 1 : 0;
     }
-    for (uint32_t slot : m_pairContacts) {
+    for (uint32_t slot : m_touchingContacts) {
         const Contact& c = m_contactPool[slot];
         for (int k = 0; k < c.manifold.pointCount; ++k) {
             d.maxPenetration = std::max(d.maxPenetration, -c.manifold.points[k].separation);
@@ -1076,9 +1110,8 @@ FrameDiagnostics World::diagnostics() const {
 
 std::vector<Manifold> World::manifolds() const {
     std::vector<Manifold> out;
-    for (uint32_t slot : m_pairContacts)
-        if (m_contactPool[slot].manifold.pointCount > 0)
-            out.push_back(m_contactPool[slot].manifold);
+    for (uint32_t slot : m_touchingContacts)
+        out.push_back(m_contactPool[slot].manifold);
     return out;
 }
 

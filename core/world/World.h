@@ -209,7 +209,8 @@ private:
     int substepRefinement(Real massRatio) const;
     void continuousCollision();
     void updateSleep();
-    void collidePair(Contact& contact);
+    Real pairMargin(uint32_t a, uint32_t b) const;
+    void collidePair(uint32_t slot, Real margin);
     void refreshTransforms();
     void wakeIsland(uint32_t body);
     void restartSleepClock(uint32_t body);
@@ -252,12 +253,19 @@ private:
     // Shape-to-world transform per body, taken once at the start of the step: the broadphase and every pair of
     // the narrowphase need it, and each mat3_cast costs more than the lookup.
     std::vector<Transform> m_transforms;
+    std::vector<Aabb> m_bounds; // tight world boxes of the shapes, at the start of the step
+    // Per pool slot: 1 while the contact's manifold has points. Kept beside the pool so that the narrowphase can
+    // tell without reading the contact, which is some 700 bytes in no useful order.
+    std::vector<uint8_t> m_contactTouching;
+    std::vector<std::pair<uint32_t, uint32_t>> m_pairBodies; // the bodies of m_pairContacts[i]
+    std::vector<uint32_t> m_touchingContacts; // slots of the touching contacts, in pair order, after narrowphase
     // Scratch of findPairs() and solve(), kept between steps so that a step does not allocate.
     std::vector<uint32_t> m_nextPairContacts;
     std::vector<uint32_t> m_group;
     std::vector<uint8_t> m_refinement; // per body: its island's substep multiplier this step, 0 when not moving
     std::vector<Real> m_islandMinMass, m_islandMaxMass;
     std::vector<uint32_t> m_narrowActive, m_solverIndex, m_moving;
+    std::vector<Real> m_narrowMargins;
     SolveScratch m_scratch;
     std::vector<SolveScratch> m_memberScratch; // islands shared out: one part per member of the team
     static constexpr uint32_t kNoMember = 0xffffffffu;

@@ -115,6 +115,41 @@ private slots:
         QVERIFY2(maxSpeedLastSecond < 0.01, qPrintable(QString("speed %1").arg(maxSpeedLastSecond)));
     }
 
+    // The broadphase pairs bodies whose fat boxes overlap; the narrowphase tests the shapes only where the tight
+    // boxes come within the pair's speculative margin, and a pair that moved apart loses its points.
+    void pairsApartByTheirBoxesAreNotTestedAndLoseTheirPoints() {
+        Scene s = floorScene();
+        s.materials.push_back({"Slick", 1000.0, 0.0, 0.0});
+        s.bodies[0].material = "Slick";
+        // Two 0.2 m cubes side by side, touching, pushed apart at 0.6 m/s each.
+        s.bodies.push_back(box("Left", Vec3(0.1), Vec3(-0.1, 0.1, 0)));
+        s.bodies.push_back(box("Right", Vec3(0.1), Vec3(0.1, 0.1, 0)));
+        s.bodies[1].material = s.bodies[2].material = "Slick";
+        s.bodies[1].velocity = Vec3(-0.6, 0, 0);
+        s.bodies[2].velocity = Vec3(0.6, 0, 0);
+        World w = makeWorld(s);
+        const auto touchingPairs = [&] {
+            int cubes = 0;
+            for (const Manifold& m : w.manifolds())
+                cubes += (m.bodyA == 1 && m.bodyB == 2) || (m.bodyA == 2 && m.bodyB == 1) ? 1 : 0;
+            return cubes;
+        };
+        w.step();
+        QCOMPARE(touchingPairs(), 1); // they start face to face
+        QCOMPARE(w.profile().counter(Counter::PairsTested), uint64_t(3));
+        // After 5 steps the faces are 10 cm apart: more than the margin (2 cm + 1.2 m/s / 60), within the fat
+        // boxes' 2 x 5 cm. The broadphase still pairs the cubes, the narrowphase no longer tests them.
+        for (int i = 0; i < 5; ++i)
+            w.step();
+        QVERIFY(w.centerOfMass(2).x - w.centerOfMass(1).x > 0.2 + 0.08);
+        w.resetProfile();
+        w.step();
+        QCOMPARE(w.profile().counter(Counter::Pairs), uint64_t(3));
+        QCOMPARE(w.profile().counter(Counter::PairsTested), uint64_t(2)); // each cube with the floor
+        QCOMPARE(touchingPairs(), 0);
+        QCOMPARE(w.manifolds().size(), size_t(2));
+    }
+
     void frictionlessSceneSolvesNoFrictionRows() {
         Scene s = floorScene();
         s.materials.push_back({"Slick", 1000.0, 0.0, 0.0});

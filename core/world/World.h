@@ -254,6 +254,7 @@ private:
     // the narrowphase need it, and each mat3_cast costs more than the lookup.
     std::vector<Transform> m_transforms;
     std::vector<Aabb> m_bounds; // tight world boxes of the shapes, at the start of the step
+    std::vector<Real> m_reach;  // |v| + |w| radius at the start of the step, m/s: how fast any point can move
     // Per pool slot: 1 while the contact's manifold has points. Kept beside the pool so that the narrowphase can
     // tell without reading the contact, which is some 700 bytes in no useful order.
     std::vector<uint8_t> m_contactTouching;

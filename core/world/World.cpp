@@ -161,6 +161,9 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
     w.m_solverSettings.friction = fx.has(Effect::Friction);
     w.m_solverSettings.restitution = fx.has(Effect::Restitution);
 
+    BroadPhaseSettings broad;
+    broad.dynamicTree.margin = w.m_tuning.aabbMargin;
+    w.m_broadPhase = BroadPhase(broad);
     w.m_proxies.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const Aabb box = w.m_shapes[i].worldBounds(w.transform(i));

@@ -394,7 +394,9 @@ void World::narrowphase() {
     // least that far apart. The fat boxes of the broadphase overlap far more often than the shapes come within the
     // margin (over ramps.obj's first 600 frames, 12 % of the pairs are tested), so this test, on the compact list of
     // pair bodies and the bodies' boxes, spares most pairs a visit to their contact, some 700 bytes each. (The stage
-    // went from 368-394 ms to 297-308 ms over the first 240 frames, three interleaved runs; frames bit-identical.)
+    // went from 368-394 ms to 297-308 ms over the first 240 frames, three interleaved runs, with the same frames.)
+    // The clip's speculative separations are lower bounds of the distance, so it could keep a point for a pair that
+    // cannot touch within the step; this test drops such points (27 times in 600 frames of a 1,000-box pile).
     std::vector<uint32_t>& active = m_narrowActive;
     std::vector<Real>& margins = m_narrowMargins;
     active.clear();

@@ -30,8 +30,18 @@ Vec3 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec3& rA, 
 inline Vec3 angularOf(const Vec3& r, const Vec3& d) {
     return glm::cross(r, d);
 }
-inline Vec3 inertiaOf(const SolverBody& body, const Vec3& r, const Vec3& d) {
-    return body.invInertia * glm::cross(r, d);
+
+// A side's inverse mass and inertia as one constraint sees them: times its scale (see ContactConstraint), in the
+// order the batches use, so a scale of 1 gives the body's own numbers.
+struct Inverse {
+    Real mass;
+    Mat3 inertia;
+};
+inline Inverse inverseOf(const SolverBody& body, Real scale) {
+    return {body.invMass * scale, body.invInertia * scale};
+}
+inline Vec3 inertiaOf(const Inverse& inverse, const Vec3& r, const Vec3& d) {
+    return inverse.inertia * glm::cross(r, d);
 }
 
 // Relative velocity of the anchors along row d of point p: dot(d, vB - vA) + wB . (rB x d) - wA . (rA x d).
@@ -40,11 +50,12 @@ inline Real rowVelocity(const SolverBody& a, const SolverBody& b, const ContactC
 }
 
 // Applies the impulse j along row d of point p (to B, and its opposite to A).
-inline void applyRow(SolverBody& a, SolverBody& b, const ContactConstraint::Point& p, const Vec3& d, Real j) {
-    a.v -= (a.invMass * j) * d;
-    a.w -= j * inertiaOf(a, p.rA, d);
-    b.v += (b.invMass * j) * d;
-    b.w += j * inertiaOf(b, p.rB, d);
+inline void applyRow(SolverBody& a, SolverBody& b, const Inverse& ia, const Inverse& ib,
+                     const ContactConstraint::Point& p, const Vec3& d, Real j) {
+    a.v -= (ia.mass * j) * d;
+    a.w -= j * inertiaOf(ia, p.rA, d);
+    b.v += (ib.mass * j) * d;
+    b.w += j * inertiaOf(ib, p.rB, d);
 }
 
 // rowVelocity() and applyRow() without the side that is the static entry 0 (see solveConstraint()).
@@ -59,23 +70,26 @@ inline Real rowVelocityT(const SolverBody& a, const SolverBody& b, const Contact
 }
 
 template <bool kStaticA, bool kStaticB>
-inline void applyRowT(SolverBody& a, SolverBody& b, const ContactConstraint::Point& p, const Vec3& d, Real j) {
+inline void applyRowT(SolverBody& a, SolverBody& b, const Inverse& ia, const Inverse& ib,
+                      const ContactConstraint::Point& p, const Vec3& d, Real j) {
     if constexpr (!kStaticA) {
-        a.v -= (a.invMass * j) * d;
-        a.w -= j * inertiaOf(a, p.rA, d);
+        a.v -= (ia.mass * j) * d;
+        a.w -= j * inertiaOf(ia, p.rA, d);
     }
     if constexpr (!kStaticB) {
-        b.v += (b.invMass * j) * d;
-        b.w += j * inertiaOf(b, p.rB, d);
+        b.v += (ib.mass * j) * d;
+        b.w += j * inertiaOf(ib, p.rB, d);
     }
 }
 
 // One manifold's constraint, for one step (see prepare()).
 void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, uint32_t indexB, Real friction,
-                     Real restitution, std::span<const SolverBody> bodies, std::span<const Vec3> centers,
+                     Real restitution, uint8_t held, std::span<const SolverBody> bodies, std::span<const Vec3> centers,
                      const ContactSolverSettings& settings) {
     c.bodyA = indexA;
     c.bodyB = indexB;
+    c.scaleA = held == ContactSolver::kHoldA ? 0.0 : 1.0;
+    c.scaleB = held == ContactSolver::kHoldB ? 0.0 : 1.0;
     c.normal = m.normal;
     tangentBasis(m.normal, c.tangent[0], c.tangent[1]);
     c.friction = friction;
@@ -83,6 +97,7 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
     c.pointCount = m.pointCount;
     const SolverBody& a = bodies[c.bodyA];
     const SolverBody& b = bodies[c.bodyB];
+    const Inverse ia = inverseOf(a, c.scaleA), ib = inverseOf(b, c.scaleB);
     // Gravity acts on the bodies that can move (not on anchors and sleepers, entries with no inverse mass).
     const Vec3 gA = a.invMass > 0.0 ? settings.gravity : Vec3(0.0);
     const Vec3 gB = b.invMass > 0.0 ? settings.gravity : Vec3(0.0);
@@ -100,8 +115,8 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
         Real masses[3];
         for (int row = 0; row < 3; ++row) {
             const Vec3 angularA = angularOf(p.rA, *directions[row]), angularB = angularOf(p.rB, *directions[row]);
-            const Vec3 inertiaA = a.invInertia * angularA, inertiaB = b.invInertia * angularB;
-            const Real k = a.invMass + b.invMass + glm::dot(angularA, inertiaA) + glm::dot(angularB, inertiaB);
+            const Vec3 inertiaA = ia.inertia * angularA, inertiaB = ib.inertia * angularB;
+            const Real k = ia.mass + ib.mass + glm::dot(angularA, inertiaA) + glm::dot(angularB, inertiaB);
             masses[row] = k > 0.0 ? static_cast<float>(1.0 / k) : 0.0;
         }
         p.normalMass = masses[0];
@@ -142,7 +157,8 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
                             std::span<const uint32_t> solverIndexB, std::span<const Real> friction,
                             std::span<const Real> restitution, std::span<const SolverBody> bodies,
                             std::span<const Vec3> centers, Real h, const ContactSolverSettings& settings,
-                            std::span<const uint8_t> bodyPart, const ParallelFor& parallelFor) {
+                            std::span<const uint8_t> bodyPart, const ParallelFor& parallelFor,
+                            std::span<const uint8_t> heldSide) {
     m_settings = settings;
     m_inverseH = h > 0.0 ? 1.0 / h : 0.0;
     m_h = h;
@@ -153,7 +169,7 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
     const auto setUp = [&](size_t begin, size_t end) {
         for (size_t i = begin; i < end; ++i)
             setUpConstraint(m_constraints[i], manifolds[i], solverIndexA[i], solverIndexB[i], friction[i],
-                            restitution[i], bodies, centers, settings);
+                            restitution[i], heldSide.empty() ? uint8_t(0) : heldSide[i], bodies, centers, settings);
     };
     if (parallelFor)
         parallelFor(manifolds.size(), setUp);
@@ -276,6 +292,9 @@ void ContactSolver::buildBatches() {
                 set(batch.tangent[1], c.tangent[1], lane);
                 batch.friction.v[l] = c.friction;
                 batch.approachAcceleration.v[l] = c.approachAcceleration;
+                batch.scaleA.v[l] = c.scaleA;
+                batch.scaleB.v[l] = c.scaleB;
+                batch.holds = batch.holds || c.scaleA != 1.0 || c.scaleB != 1.0;
                 for (int k = 0; k < c.pointCount; ++k) {
                     const ContactConstraint::Point& p = c.points[c.order[k]];
                     BatchPoint& q = m_batchPoints[batch.firstPoint + static_cast<uint32_t>(k)];
@@ -338,13 +357,14 @@ namespace {
 
 template <bool kStaticA, bool kStaticB>
 void warmStartConstraint(const ContactConstraint& c, SolverBody& a, SolverBody& b) {
+    const Inverse ia = inverseOf(a, c.scaleA), ib = inverseOf(b, c.scaleB);
     for (int k = 0; k < c.pointCount; ++k) {
         const ContactConstraint::Point& p = c.points[c.order[k]]; // the batches' order
         if (p.normalImpulse == 0.0 && p.tangentImpulse[0] == 0.0 && p.tangentImpulse[1] == 0.0)
             continue; // a speculative point that never pushed: nothing to apply
-        applyRowT<kStaticA, kStaticB>(a, b, p, c.normal, p.normalImpulse);
-        applyRowT<kStaticA, kStaticB>(a, b, p, c.tangent[0], p.tangentImpulse[0]);
-        applyRowT<kStaticA, kStaticB>(a, b, p, c.tangent[1], p.tangentImpulse[1]);
+        applyRowT<kStaticA, kStaticB>(a, b, ia, ib, p, c.normal, p.normalImpulse);
+        applyRowT<kStaticA, kStaticB>(a, b, ia, ib, p, c.tangent[0], p.tangentImpulse[0]);
+        applyRowT<kStaticA, kStaticB>(a, b, ia, ib, p, c.tangent[1], p.tangentImpulse[1]);
     }
 }
 
@@ -370,6 +390,7 @@ namespace {
 template <bool kStaticA, bool kStaticB>
 void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool useBias, Real inverseH, Real elapsed,
                      const Softness& soft, const ContactSolverSettings& settings) {
+    const Inverse ia = inverseOf(a, c.scaleA), ib = inverseOf(b, c.scaleB);
     for (int j = 0; j < c.pointCount; ++j) {
         ContactConstraint::Point& p = c.points[c.order[j]];
         // Current separation from the motion since the step began; anchors follow each body's rotation.
@@ -403,7 +424,7 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
         if (impulse > 0.0 && p.maxNormalImpulse == 0.0)
             p.relativeVelocity += c.approachAcceleration * elapsed;
         p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
-        applyRowT<kStaticA, kStaticB>(a, b, p, c.normal, impulse);
+        applyRowT<kStaticA, kStaticB>(a, b, ia, ib, p, c.normal, impulse);
     }
 
     if (!settings.friction || c.friction <= 0.0)
@@ -420,7 +441,7 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
             const Real newImpulse = std::clamp(p.tangentImpulse[t] + impulse, -maxFriction, maxFriction);
             impulse = newImpulse - p.tangentImpulse[t];
             p.tangentImpulse[t] = newImpulse;
-            applyRowT<kStaticA, kStaticB>(a, b, p, c.tangent[t], impulse);
+            applyRowT<kStaticA, kStaticB>(a, b, ia, ib, p, c.tangent[t], impulse);
         }
     }
 }
@@ -466,6 +487,7 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
             continue;
         SolverBody& a = bodies[c.bodyA];
         SolverBody& b = bodies[c.bodyB];
+        const Inverse ia = inverseOf(a, c.scaleA), ib = inverseOf(b, c.scaleB);
         // The points of one manifold are coupled through the bodies' rotation: one pass, point after point, leaves
         // the first point's impulse lopsided and spins a box that landed flat (a 0.2 m cube dropped face down on
         // its four corners left at 15 rad/s). So the manifold's bouncing points are iterated together until the
@@ -495,7 +517,7 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
                 impulse = newImpulse - p.normalImpulse;
                 p.normalImpulse = newImpulse;
                 p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
-                applyRow(a, b, p, c.normal, impulse);
+                applyRow(a, b, ia, ib, p, c.normal, impulse);
                 ++m_counters.restitutionRows;
                 largest = std::max(largest, std::abs(impulse));
                 total += newImpulse;

@@ -83,6 +83,9 @@ struct ContactConstraint {
     int pointCount = 0;
     Point points[4];
     uint8_t order[4] = {0, 1, 2, 3}; // the normal rows' solve order: by separation at the step start
+    // 0 for a side held still by this constraint (its inverse mass and inertia count as zero here, see prepare()'s
+    // heldSide), else 1. Multiplying by 1 changes no bit, so constraints that hold nothing give the same numbers.
+    Real scaleA = 1.0, scaleB = 1.0;
 };
 
 class ContactSolver {
@@ -100,11 +103,16 @@ public:
     // are then swept in three segments: those within part 0, those within part 1, and the boundary (a constraint
     // between a body of each part), each segment in manifold order. The two parts share no moving body, so two
     // threads can sweep them at once with no barrier between levels (segmentLevelBegin()).
+    //
+    // heldSide, if given, holds one side of a manifold still for its constraint: kHoldA or kHoldB (else 0). The held
+    // body's velocity is read but the constraint's impulses do not move it, as if it were infinitely heavy, so the
+    // other body is stopped by it in one sweep (shock propagation: World holds the lower of two bodies).
     void prepare(std::span<const Manifold> manifolds, std::span<const uint32_t> solverIndexA,
                  std::span<const uint32_t> solverIndexB, std::span<const Real> friction,
                  std::span<const Real> restitution, std::span<const SolverBody> bodies, std::span<const Vec3> centers,
                  Real h, const ContactSolverSettings& settings, std::span<const uint8_t> bodyPart = {},
-                 const ParallelFor& parallelFor = {});
+                 const ParallelFor& parallelFor = {}, std::span<const uint8_t> heldSide = {});
+    static constexpr uint8_t kHoldA = 1, kHoldB = 2;
     static constexpr size_t kParts = 2;
     static constexpr size_t kBoundarySegment = kParts; // segments 0 .. kParts - 1 are the parts
 
@@ -188,6 +196,8 @@ private:
         uint32_t firstPoint = 0, pointCount = 0;
         Lanes normal[3], tangent[2][3];
         Lanes friction, approachAcceleration;
+        Lanes scaleA, scaleB; // the constraints' scaleA, scaleB
+        bool holds = false;   // a lane holds a side still: the sweeps scale that side's inverse mass and inertia
     };
     // Only what a point cannot recompute is stored: the sweeps stream every point of the group through the cache
     // (54k in large_pyramid) and were bound by memory when the points carried their rows' r x d and I^-1 (r x d)

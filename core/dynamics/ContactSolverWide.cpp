@@ -274,6 +274,19 @@ RL_LANES_INLINE void scatter(const Side& s, std::span<SolverBody> bodies, const 
 
 #endif
 
+// The constraints' scales on each side's inverse mass and inertia, as inverseOf() in ContactSolver.cpp: a held side
+// (scale 0) is read but not moved.
+RL_LANES_INLINE void scaleSide(Side& s, const V& scale) {
+    s.invMass = s.invMass * scale;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            s.invInertia.m[c][r] = s.invInertia.m[c][r] * scale;
+}
+RL_LANES_INLINE void hold(Side& a, Side& b, const Lanes& scaleA, const Lanes& scaleB) {
+    scaleSide(a, get(scaleA));
+    scaleSide(b, get(scaleB));
+}
+
 // One row of one point along direction d: r x d for each body, and that times the body's inverse inertia, computed
 // as the scalar sweeps compute them (angularOf(), inertiaOf() in ContactSolver.cpp).
 struct Row {
@@ -313,6 +326,8 @@ RL_WIDE_CLONES void ContactSolver::warmStartBatchRange(std::span<SolverBody> bod
         Side a, b;
         gather<false>(a, bodies, batch.bodyA);
         gather<false>(b, bodies, batch.bodyB);
+        if (batch.holds)
+            hold(a, b, batch.scaleA, batch.scaleB);
         const L3 normal = load(batch.normal);
         const L3 tangent[2] = {load(batch.tangent[0]), load(batch.tangent[1])};
         for (uint32_t k = 0; k < batch.pointCount; ++k) {
@@ -342,6 +357,8 @@ RL_WIDE_CLONES void ContactSolver::solveBatchRange(std::span<SolverBody> bodies,
         Side a, b;
         gather<true>(a, bodies, batch.bodyA);
         gather<true>(b, bodies, batch.bodyB);
+        if (batch.holds)
+            hold(a, b, batch.scaleA, batch.scaleB);
         const L3 normal = load(batch.normal);
         for (uint32_t k = 0; k < batch.pointCount; ++k) {
             BatchPoint& p = m_batchPoints[batch.firstPoint + k];

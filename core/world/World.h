@@ -59,6 +59,11 @@ struct WorldTuning {
     Real refineMassRatio = 250.0;
     Real refineSubsteps = 8.0;
     int maxSubstepRefinement = 4;
+    // In such an island, a contact that holds a body up against gravity (normal within 45 degrees of vertical) and
+    // lies between a body nearer the ground and one at least this many times heavier holds the lower body still
+    // (World::heightsAboveSupport()). Only the contacts where a much heavier body bears on a light one hold: light
+    // boxes among themselves are solved as before, even in an island with a heavy body.
+    Real holdMassRatio = 10.0;
     // Sweeps of the relax pass per substep (the solve pass runs `iterations` sweeps). The relax pass removes the
     // push-apart velocity of the soft solve. One sweep leaves the velocities of a resting pile unconverged: a box on a
     // few single-point contacts comes out of each step turning at up to 0.3 rad/s one way, then the other, while its
@@ -182,6 +187,7 @@ private:
         std::vector<uint32_t> activeContacts, indexA, indexB; // pool slots of the group's contacts; solver indices
         std::vector<Manifold> manifolds;
         std::vector<Real> friction, restitution;
+        std::vector<uint8_t> held;         // per contact: ContactSolver::kHoldA / kHoldB for shock propagation, else 0
         std::vector<ClampCounters> clamps; // per member of the team
         std::vector<uint8_t> part;         // per solver body: its part (cutIslands())
         size_t islandsCut = 0;             // islands of the group cut in parts
@@ -212,6 +218,9 @@ private:
     static constexpr size_t kMinBodiesForTeam = 128;
     static constexpr size_t kMinLevelWidth = 16;
     int substepRefinement(Real massRatio) const;
+    void heightsAboveSupport(std::span<const uint32_t> moving);
+    // Whether the contact holds the other body up against gravity, by its A side (byA) or its B side.
+    bool supports(const Contact& contact, bool byA) const;
     void continuousCollision();
     void updateSleep();
     Real pairMargin(uint32_t a, uint32_t b) const;
@@ -270,6 +279,10 @@ private:
     std::vector<uint32_t> m_group;
     std::vector<uint8_t> m_refinement; // per body: its island's substep multiplier this step, 0 when not moving
     std::vector<Real> m_islandMinMass, m_islandMaxMass;
+    // Per body, for islands with a mass ratio above refineMassRatio: 1 + the fewest contacts to an immovable body
+    // (anchor or sleeper), 0 elsewhere (see World::heightsAboveSupport()).
+    std::vector<uint32_t> m_height;
+    bool m_anyHeight = false;
     std::vector<uint32_t> m_narrowActive, m_solverIndex, m_moving;
     std::vector<Real> m_narrowMargins;
     SolveScratch m_scratch;

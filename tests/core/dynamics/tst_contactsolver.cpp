@@ -20,7 +20,16 @@ struct Problem {
     std::vector<Real> friction, restitution;
     std::vector<SolverBody> bodies;
     std::vector<Vec3> centers;
+    std::vector<uint8_t> held; // empty, or per manifold: ContactSolver::kHoldA / kHoldB / 0
 };
+
+// Every third constraint between two moving bodies holds its A side, the next its B side.
+void holdSome(Problem& p) {
+    p.held.assign(p.manifolds.size(), 0);
+    for (size_t k = 0; k < p.manifolds.size(); ++k)
+        if (p.indexA[k] != 0 && p.indexB[k] != 0)
+            p.held[k] = k % 3 == 1 ? ContactSolver::kHoldA : k % 3 == 2 ? ContactSolver::kHoldB : 0;
+}
 
 // `count` one-point contacts between random bodies 1..bodyCount, some against the static entry 0; or a chain
 // 0-1, 1-2, 2-3, ... (a tower) when chain is set.
@@ -69,7 +78,7 @@ void prepare(ContactSolver& solver, const Problem& p, std::span<const uint8_t> p
     ContactSolverSettings settings;
     settings.contactHertz = 120.0;
     solver.prepare(p.manifolds, p.indexA, p.indexB, p.friction, p.restitution, p.bodies, p.centers, 1.0 / 480.0,
-                   settings, parts);
+                   settings, parts, {}, p.held);
 }
 
 // Part 0 or 1 for each body: bodies 1..n/2 in part 0, the rest in part 1 (a cut through the middle of the ids).
@@ -173,17 +182,23 @@ private slots:
         QTest::addColumn<int>("constraints");
         QTest::addColumn<bool>("chain");
         QTest::addColumn<bool>("parts");
-        QTest::newRow("tower of 40") << 40 << 40 << true << false;
-        QTest::newRow("203 random contacts among 60 bodies") << 60 << 203 << false << false;
-        QTest::newRow("3001 random contacts among 1000 bodies") << 1000 << 3001 << false << false;
-        QTest::newRow("3001 random contacts among 1000 bodies in two parts") << 1000 << 3001 << false << true;
+        QTest::addColumn<bool>("holds");
+        QTest::newRow("tower of 40") << 40 << 40 << true << false << false;
+        QTest::newRow("203 random contacts among 60 bodies") << 60 << 203 << false << false << false;
+        QTest::newRow("3001 random contacts among 1000 bodies") << 1000 << 3001 << false << false << false;
+        QTest::newRow("3001 random contacts among 1000 bodies in two parts") << 1000 << 3001 << false << true << false;
+        QTest::newRow("tower of 40, holding sides") << 40 << 40 << true << false << true;
+        QTest::newRow("203 random contacts among 60 bodies, holding sides") << 60 << 203 << false << false << true;
     }
     void batchesGiveTheSequentialNumbers() {
         QFETCH(int, bodies);
         QFETCH(int, constraints);
         QFETCH(bool, chain);
         QFETCH(bool, parts);
+        QFETCH(bool, holds);
         Problem p = makeProblem(bodies, constraints, chain, 5);
+        if (holds)
+            holdSome(p);
         const std::vector<uint8_t> part = halves(static_cast<size_t>(bodies));
         const std::span<const uint8_t> partSpan = parts ? std::span<const uint8_t>(part) : std::span<const uint8_t>();
         std::mt19937 rng(3);
@@ -229,6 +244,59 @@ private slots:
         }
         qInfo("%d constraints, %d solved deepest point first, %d points pushing", constraints, impacts, pushing);
         QVERIFY(pushing > 0);
+    }
+
+    // A constraint that holds one side reads that body's velocity but never moves it (to the bit), so the other body
+    // is stopped by it as by an anchor: body 1 (held, at rest) under body 2 (falling onto it at 3 m/s).
+    void aHeldSideIsReadButNotMoved_data() {
+        QTest::addColumn<bool>("holdA");
+        QTest::newRow("held as A") << true;
+        QTest::newRow("held as B") << false;
+    }
+    void aHeldSideIsReadButNotMoved() {
+        QFETCH(bool, holdA);
+        Problem p;
+        p.bodies.assign(3, SolverBody{});
+        p.centers = {Vec3(0.0), Vec3(0.0, 0.5, 0.0), Vec3(0.0, 1.5, 0.0)};
+        for (size_t i = 1; i < 3; ++i) {
+            p.bodies[i].invMass = i == 1 ? 1.0 : 1e-3; // 1 kg under 1,000 kg
+            p.bodies[i].invInertia = Mat3(6.0 * p.bodies[i].invMass);
+        }
+        p.bodies[2].v = Vec3(0.0, -3.0, 0.0);
+        Manifold m;
+        m.bodyA = holdA ? 1 : 2;
+        m.bodyB = holdA ? 2 : 1;
+        m.normal = Vec3(0.0, holdA ? 1.0 : -1.0, 0.0); // from A to B
+        m.pointCount = 4;
+        for (int k = 0; k < 4; ++k) {
+            m.points[k].position = Vec3(k % 2 ? 0.5 : -0.5, 1.0, k / 2 ? 0.5 : -0.5);
+            m.points[k].separation = 0.0;
+        }
+        p.manifolds = {m};
+        p.indexA = {m.bodyA};
+        p.indexB = {m.bodyB};
+        p.friction = {0.6};
+        p.restitution = {0.0};
+        p.held = {holdA ? ContactSolver::kHoldA : ContactSolver::kHoldB};
+        ContactSolver solver;
+        prepare(solver, p);
+        std::vector<SolverBody> bodies = p.bodies;
+        solver.warmStart(bodies);
+        solver.solve(bodies, true);
+        solver.solve(bodies, false);
+        QVERIFY(sameBits(bodies[1].v, p.bodies[1].v) && sameBits(bodies[1].w, p.bodies[1].w));
+        qInfo("held: heavy body %.4f m/s", bodies[2].v.y);
+        QVERIFY(std::abs(bodies[2].v.y) < 0.05); // stopped from 3 m/s in one substep, as by an anchor
+        // Unheld, the light body takes most of the blow and the heavy one is barely slowed.
+        p.held.clear();
+        ContactSolver unheld;
+        prepare(unheld, p);
+        bodies = p.bodies;
+        unheld.warmStart(bodies);
+        unheld.solve(bodies, true);
+        unheld.solve(bodies, false);
+        qInfo("unheld: light body %.4f m/s, heavy %.4f m/s", bodies[1].v.y, bodies[2].v.y);
+        QVERIFY(bodies[2].v.y < -2.9);
     }
 
     void aTeamOfTwoSolvesBitIdentically_data() {

@@ -538,9 +538,10 @@ void World::heightsAboveSupport(std::span<const uint32_t> moving) {
     // at a time, and the soft contact under the light body is only as stiff as suits the light mass, so a 1,000 kg
     // cube dropped 1 m onto a 1 kg one sank 59 mm into it for a few frames. In islands with a mass ratio above
     // refineMassRatio, each moving body's height is the fewest contacts from it down to an immovable body (1 when it
-    // touches one); a contact between bodies of different heights holds the lower one still (shock propagation,
-    // Guendelman et al. 2003), so the upper body is stopped by it as by the ground. Heights are shortest paths, the
-    // same whatever the order of the contacts. Other islands are left as they are, to the bit.
+    // touches one). A contact between bodies of different heights holds the lower one still (shock propagation,
+    // Guendelman et al. 2003) when it holds the upper one up against gravity and the upper one is holdMassRatio times
+    // heavier (supports(), solveSubsteps()), so the upper body is stopped by it as by the ground. Heights are shortest
+    // paths, the same whatever the order of the contacts. Other islands are left as they are, to the bit.
     const uint32_t n = m_state.size();
     m_anyHeight = false;
     for (uint32_t i : moving) {

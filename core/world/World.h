@@ -279,8 +279,8 @@ private:
     std::vector<uint32_t> m_group;
     std::vector<uint8_t> m_refinement; // per body: its island's substep multiplier this step, 0 when not moving
     std::vector<Real> m_islandMinMass, m_islandMaxMass;
-    // Per body, for islands with a mass ratio above refineMassRatio: 1 + the fewest contacts to an immovable body
-    // (anchor or sleeper), 0 elsewhere (see World::heightsAboveSupport()).
+    // Per body, for islands with a mass ratio above refineMassRatio: the fewest contacts down to an immovable body
+    // (anchor or sleeper), 1 when it touches one; 0 elsewhere or with no path (see World::heightsAboveSupport()).
     std::vector<uint32_t> m_height;
     bool m_anyHeight = false;
     std::vector<uint32_t> m_narrowActive, m_solverIndex, m_moving;

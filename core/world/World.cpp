@@ -165,8 +165,11 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
     broad.dynamicTree.margin = w.m_tuning.aabbMargin;
     w.m_broadPhase = BroadPhase(broad);
     w.m_proxies.resize(n);
+    w.m_bounds.resize(n);
+    w.m_reach.assign(n, 0.0);
     for (size_t i = 0; i < n; ++i) {
         const Aabb box = w.m_shapes[i].worldBounds(w.transform(i));
+        w.m_bounds[i] = box;
         Result<ProxyKey> key = w.m_broadPhase.createProxy(
             box, static_cast<uint32_t>(i),
             w.m_state.isStatic(static_cast<uint32_t>(i)) ? ProxyKind::Static : ProxyKind::Dynamic);
@@ -224,11 +227,12 @@ void World::step() {
 void World::refreshTransforms() {
     // Bodies move only in solve() and CCD, both after the narrowphase, so these stay valid for the whole of
     // broadphase and narrowphase. Every body, not only the moving ones: one that fell asleep last step moved first.
+    // Anchors never move: their boxes are taken once (create()) and their reach stays 0.
     m_transforms.resize(m_state.size());
-    m_bounds.resize(m_state.size());
-    m_reach.resize(m_state.size());
     for (uint32_t i = 0; i < m_state.size(); ++i) {
         m_transforms[i] = transform(i);
+        if (m_state.isStatic(i))
+            continue;
         m_bounds[i] = m_shapes[i].worldBounds(m_transforms[i]);
         m_reach[i] = glm::length(m_state.linearVelocity[i]) + glm::length(m_state.angularVelocity[i]) * m_radius[i];
     }
@@ -540,26 +544,20 @@ void World::heightsAboveSupport(std::span<const uint32_t> moving) {
     // refineMassRatio, each moving body's height is the fewest contacts from it down to an immovable body (1 when it
     // touches one). A contact between bodies of different heights holds the lower one still (shock propagation,
     // Guendelman et al. 2003) when it holds the upper one up against gravity and the upper one is holdMassRatio times
-    // heavier (supports(), solveSubsteps()), so the upper body is stopped by it as by the ground. Heights are shortest
+    // heavier (heldSide()), so the upper body is stopped by it as by the ground. Heights are shortest
     // paths, the same whatever the order of the contacts. Other islands are left as they are, to the bit.
-    const uint32_t n = m_state.size();
-    m_anyHeight = false;
-    for (uint32_t i : moving) {
+    const auto inMixedIsland = [&](uint32_t i) {
         const uint32_t root = m_island[i];
-        if (m_islandMaxMass[root] > m_tuning.refineMassRatio * m_islandMinMass[root]) {
-            m_anyHeight = true;
-            break;
-        }
-    }
+        return m_islandMaxMass[root] > m_tuning.refineMassRatio * m_islandMinMass[root];
+    };
+    m_anyHeight = std::any_of(moving.begin(), moving.end(), inMixedIsland);
     if (!m_anyHeight)
         return;
-    m_height.assign(n, 0);
+    m_height.assign(m_state.size(), 0);
     constexpr uint32_t kUnknown = 0xffffffffu;
-    for (uint32_t i : moving) {
-        const uint32_t root = m_island[i];
-        if (m_islandMaxMass[root] > m_tuning.refineMassRatio * m_islandMinMass[root])
+    for (uint32_t i : moving)
+        if (inMixedIsland(i))
             m_height[i] = kUnknown;
-    }
     for (uint32_t slot : m_touchingContacts) {
         const Contact& c = m_contactPool[slot];
         if (m_height[c.bodyA] == kUnknown && !m_state.isMoving(c.bodyB))
@@ -590,17 +588,25 @@ void World::heightsAboveSupport(std::span<const uint32_t> moving) {
             m_height[i] = 0;
 }
 
-bool World::supports(const Contact& contact, bool byA) const {
-    // The contact holds the other body up against gravity: its normal is within 45 degrees of vertical and the
-    // supporting body is the lower one. A heavy body swung sideways into a light one on the floor is not stopped by
-    // it, however many contacts lie between the light one and the floor.
+uint8_t World::heldSide(const Contact& contact) const {
+    // Of two moving bodies at different heights (heightsAboveSupport()), the lower one is held still when the
+    // contact holds the upper one up against gravity (its normal within 45 degrees of vertical, the lower body below)
+    // and the upper one is holdMassRatio times heavier. A heavy body swung sideways into a light one on the floor is
+    // not stopped by it, however many contacts lie between the light one and the floor.
+    const uint32_t ha = m_height[contact.bodyA], hb = m_height[contact.bodyB];
     const Real g2 = glm::dot(m_gravity, m_gravity);
-    if (!(g2 > 0.0))
-        return false;
+    if (ha == 0 || hb == 0 || ha == hb || !(g2 > 0.0))
+        return 0;
+    const bool lowerIsA = ha < hb;
+    const uint32_t lower = lowerIsA ? contact.bodyA : contact.bodyB, upper = lowerIsA ? contact.bodyB : contact.bodyA;
     const Vec3 up = -m_gravity / std::sqrt(g2);
-    const Real along = glm::dot(contact.manifold.normal, up); // the normal points from A to B
-    const Real rise = glm::dot(m_state.position[contact.bodyB] - m_state.position[contact.bodyA], up);
-    return byA ? along >= std::sqrt(0.5) && rise > 0.0 : -along >= std::sqrt(0.5) && rise < 0.0;
+    // Along the normal and by centres, from the lower body to the upper one (the normal points from A to B).
+    const Real along = (lowerIsA ? 1.0 : -1.0) * glm::dot(contact.manifold.normal, up);
+    const Real rise = glm::dot(m_state.position[upper] - m_state.position[lower], up);
+    if (along < std::sqrt(0.5) || !(rise > 0.0) ||
+        m_tuning.holdMassRatio * m_state.info[lower].mass > m_state.info[upper].mass)
+        return 0;
+    return lowerIsA ? ContactSolver::kHoldA : ContactSolver::kHoldB;
 }
 
 void World::solve() {
@@ -893,19 +899,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
         scratch.indexB.push_back(m_solverIndex[contact.bodyB]);
         scratch.friction.push_back(contact.friction);
         scratch.restitution.push_back(contact.restitution);
-        // Shock propagation: of two moving bodies at different heights above their support, the lower one is held
-        // still by this contact (heightsAboveSupport()).
-        uint8_t held = 0;
-        if (m_anyHeight) {
-            const uint32_t ha = m_height[contact.bodyA], hb = m_height[contact.bodyB];
-            if (ha != 0 && hb != 0 && ha != hb && supports(contact, ha < hb)) {
-                const uint32_t lower = ha < hb ? contact.bodyA : contact.bodyB;
-                const uint32_t upper = ha < hb ? contact.bodyB : contact.bodyA;
-                if (m_tuning.holdMassRatio * m_state.info[lower].mass <= m_state.info[upper].mass)
-                    held = ha < hb ? ContactSolver::kHoldA : ContactSolver::kHoldB;
-            }
-        }
-        scratch.held.push_back(held);
+        scratch.held.push_back(m_anyHeight ? heldSide(contact) : uint8_t(0));
     }
 
     // Velocities between the body state and the solver's copy, for the group's bodies first..last-1.

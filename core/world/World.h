@@ -219,8 +219,9 @@ private:
     static constexpr size_t kMinLevelWidth = 16;
     int substepRefinement(Real massRatio) const;
     void heightsAboveSupport(std::span<const uint32_t> moving);
-    // Whether the contact holds the other body up against gravity, by its A side (byA) or its B side.
-    bool supports(const Contact& contact, bool byA) const;
+    // ContactSolver::kHoldA or kHoldB for a contact of a mixed island (m_anyHeight) that holds its lower body still,
+    // else 0.
+    uint8_t heldSide(const Contact& contact) const;
     void continuousCollision();
     void updateSleep();
     Real pairMargin(uint32_t a, uint32_t b) const;

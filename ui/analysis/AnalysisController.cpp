@@ -166,7 +166,7 @@ bool AnalysisController::exportBake(std::shared_ptr<const Bake> bake, const Expo
     progress.setObjectName("ExportProgress");
     progress.setWindowTitle(tr("Export Bake"));
     progress.setWindowModality(Qt::WindowModal);
-    progress.setMinimumDuration(400); // small exports finish before it would show
+    progress.setMinimumDuration(m_exportProgressDelay); // small exports finish before it would show
     progress.setAutoClose(false);
     progress.setAutoReset(false);
     progress.setValue(0);

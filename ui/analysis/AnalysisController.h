@@ -39,6 +39,8 @@ public:
     // Writes on a worker thread with a progress dialog that can cancel; returns when done. On failure or cancel the
     // target is untouched and *error says why.
     bool exportBake(std::shared_ptr<const Bake> bake, const ExportRequest& request, QString* error = nullptr);
+    // How long an export runs before its progress dialog shows (ms; 400 by default, so small exports show none).
+    void setExportProgressDelay(int ms) { m_exportProgressDelay = ms; }
 
     // The panels, created on first use.
     AccuracyPanel* accuracyPanel();
@@ -54,6 +56,7 @@ private:
     QAction* m_exportCsv = nullptr;
     QPointer<AccuracyPanel> m_accuracy;
     QPointer<CompareBakesDialog> m_compare;
+    int m_exportProgressDelay = 400;
     bool m_skipUntitledPreflight = false; // "don't show again" for a scene that has no file yet
 };
 

@@ -47,6 +47,48 @@ void BodyState::reserve(uint32_t n) {
     info.reserve(n);
 }
 
+namespace {
+
+template <class T>
+void gatherInto(std::vector<T>& to, const std::vector<T>& from, std::span<const uint32_t> ids) {
+    to.resize(ids.size());
+    for (size_t k = 0; k < ids.size(); ++k)
+        to[k] = from[ids[k]];
+}
+
+template <class T>
+void scatterFrom(const std::vector<T>& from, std::vector<T>& to, std::span<const uint32_t> ids) {
+    for (size_t k = 0; k < ids.size(); ++k)
+        to[ids[k]] = from[k];
+}
+
+} // namespace
+
+void BodyState::gather(const BodyState& from, std::span<const uint32_t> ids) {
+    gatherInto(position, from.position, ids);
+    gatherInto(orientation, from.orientation, ids);
+    gatherInto(linearVelocity, from.linearVelocity, ids);
+    gatherInto(angularVelocity, from.angularVelocity, ids);
+    gatherInto(invMass, from.invMass, ids);
+    gatherInto(invInertia, from.invInertia, ids);
+    gatherInto(linearDamping, from.linearDamping, ids);
+    gatherInto(angularDamping, from.angularDamping, ids);
+    gatherInto(flags, from.flags, ids);
+    gatherInto(info, from.info, ids);
+    smoothLinearVelocity.resize(ids.size());
+    smoothDisplacement.resize(ids.size());
+    smoothAngularVelocity.resize(ids.size());
+    smoothRotation.resize(ids.size());
+    limits = from.limits;
+}
+
+void BodyState::scatterMotion(BodyState& to, std::span<const uint32_t> ids) const {
+    scatterFrom(position, to.position, ids);
+    scatterFrom(orientation, to.orientation, ids);
+    scatterFrom(linearVelocity, to.linearVelocity, ids);
+    scatterFrom(angularVelocity, to.angularVelocity, ids);
+}
+
 Result<uint32_t> BodyState::addBody(const BodyInit& init) {
     if (!isFinite(init.centerOfMass) || !isFinite(init.comInShape))
         return bodyError("position is not finite");

@@ -7,6 +7,7 @@
 #include "math/Types.h"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace rl {
@@ -95,6 +96,14 @@ struct BodyState {
     uint32_t size() const { return static_cast<uint32_t>(position.size()); }
     void clear(); // removes every body and resets the clamp counters; the limits are settings and stay
     void reserve(uint32_t n);
+
+    // Makes this state a copy of the bodies `ids` of `from`, as bodies 0 .. ids.size() - 1 in that order: what the
+    // integrators read and write (the smooth scratch is sized, not copied). A substep loop then runs over one
+    // contiguous run of memory, and threads that take neighbouring runs share no cache line but the one between them.
+    void gather(const BodyState& from, std::span<const uint32_t> ids);
+    // Writes the motion (position, orientation and velocities) of bodies 0 .. ids.size() - 1 back to `to`'s bodies
+    // ids: the inverse of gather() for what a step changes.
+    void scatterMotion(BodyState& to, std::span<const uint32_t> ids) const;
 
     // Validates the definition (finite numbers, positive mass, positive-definite inertia satisfying the triangle
     // inequality); bad input is an Error and leaves the state unchanged. Returns the new body's index.

@@ -902,18 +902,25 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
         scratch.held.push_back(m_anyHeight ? heldSide(contact) : uint8_t(0));
     }
 
-    // Velocities between the body state and the solver's copy, for the group's bodies first..last-1.
+    // The substeps integrate a copy of the group's bodies (group[k] is local body k), written back after them.
+    BodyState& local = scratch.local;
+    local.gather(m_state, group);
+    scratch.localIds.resize(group.size());
+    std::iota(scratch.localIds.begin(), scratch.localIds.end(), 0u);
+    scratch.startPosition = local.position;
+    scratch.startOrientation = local.orientation;
+    // Velocities between the local bodies and the solver's copy, for the group's bodies first..last-1.
     const auto toSolver = [&](size_t first, size_t last) {
         for (size_t k = first; k < last; ++k) {
-            bodies[k + 1].v = m_state.linearVelocity[group[k]];
-            bodies[k + 1].w = rotation ? m_state.angularVelocity[group[k]] : Vec3(0.0);
+            bodies[k + 1].v = local.linearVelocity[k];
+            bodies[k + 1].w = rotation ? local.angularVelocity[k] : Vec3(0.0);
         }
     };
     const auto fromSolver = [&](size_t first, size_t last) {
         for (size_t k = first; k < last; ++k) {
-            m_state.linearVelocity[group[k]] = bodies[k + 1].v;
+            local.linearVelocity[k] = bodies[k + 1].v;
             if (rotation)
-                m_state.angularVelocity[group[k]] = bodies[k + 1].w;
+                local.angularVelocity[k] = bodies[k + 1].w;
         }
     };
     // prepare() records each point's approach speed for restitution, so it must see the current velocities.
@@ -980,7 +987,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
 
     auto job = [&](int member) {
         const auto [first, last] = ThreadTeam::share(0, group.size(), member, members);
-        const std::span<const uint32_t> mine(group.data() + first, last - first);
+        const std::span<const uint32_t> mine(scratch.localIds.data() + first, last - first);
         const auto barrier = [&] {
             if (members > 1)
                 m_team->barrier();
@@ -1024,7 +1031,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
         };
         for (int s = 0; s < substeps; ++s) {
             timer(Stage::IntegrateVelocities);
-            integrateVelocities(m_state, mine, h, m_gravity, m_damping, m_integrator, rotation, scratch.clamps[member]);
+            integrateVelocities(local, mine, h, m_gravity, m_damping, m_integrator, rotation, scratch.clamps[member]);
             toSolver(first, last);
             if (members == 1) {
                 timer(Stage::WarmStart);
@@ -1045,12 +1052,11 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
             }
             timer(Stage::IntegratePositions);
             fromSolver(first, last);
-            integratePositions(m_state, mine, h, m_gravity, m_damping, m_integrator, rotation);
+            integratePositions(local, mine, h, m_gravity, m_damping, m_integrator, rotation);
             for (size_t k = first; k < last; ++k) {
-                const uint32_t i = group[k];
-                bodies[k + 1].dp = m_state.position[i] - m_stepStartPosition[i];
+                bodies[k + 1].dp = local.position[k] - scratch.startPosition[k];
                 bodies[k + 1].dR =
-                    glm::mat3_cast(glm::normalize(m_state.orientation[i] * glm::conjugate(m_stepStartOrientation[i])));
+                    glm::mat3_cast(glm::normalize(local.orientation[k] * glm::conjugate(scratch.startOrientation[k])));
             }
             toSolver(first, last);
             barrier();
@@ -1083,6 +1089,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
         solver.applyRestitution(bodies);
         fromSolver(0, group.size());
     }
+    local.scatterMotion(m_state, group);
     solver.storeImpulses(scratch.manifolds);
     for (size_t k = 0; k < scratch.activeContacts.size(); ++k)
         m_contactPool[scratch.activeContacts[k]].manifold = scratch.manifolds[k];

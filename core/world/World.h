@@ -189,10 +189,14 @@ private:
         std::vector<Real> friction, restitution;
         std::vector<uint8_t> held;         // per contact: ContactSolver::kHoldA / kHoldB for shock propagation, else 0
         std::vector<ClampCounters> clamps; // per member of the team
-        std::vector<uint8_t> part;         // per solver body: its part (cutIslands())
-        size_t islandsCut = 0;             // islands of the group cut in parts
-        std::vector<uint32_t> islandSize;  // per island root (cutIslands(), entries of the group's roots only)
-        std::vector<uint8_t> islandPart;   // likewise
+        BodyState local;                   // the group's bodies through the substeps (solveSubsteps())
+        std::vector<uint32_t> localIds;    // 0 .. bodies.size() - 1
+        std::vector<Vec3> startPosition;   // local bodies at the step start
+        std::vector<Quat> startOrientation;
+        std::vector<uint8_t> part;        // per solver body: its part (cutIslands())
+        size_t islandsCut = 0;            // islands of the group cut in parts
+        std::vector<uint32_t> islandSize; // per island root (cutIslands(), entries of the group's roots only)
+        std::vector<uint8_t> islandPart;  // likewise
         std::vector<std::pair<uint32_t, uint32_t>> cutBodies; // (island root, position in bodies)
         struct CutIsland {
             uint32_t begin = 0, end = 0; // its run in cutBodies

@@ -60,13 +60,45 @@ void BroadPhase::touchProxy(ProxyKey key) {
     markMoved(key);
 }
 
-void BroadPhase::addCandidate(ProxyKey a, ProxyKey b) {
+void BroadPhase::addCandidate(std::vector<BroadPhasePair>& to, ProxyKey a, ProxyKey b) const {
     const uint32_t idA = bodyId(a);
     const uint32_t idB = bodyId(b);
     if (idA < idB)
-        m_candidates.push_back({idA, idB, a, b});
+        to.push_back({idA, idB, a, b});
     else
-        m_candidates.push_back({idB, idA, b, a});
+        to.push_back({idB, idA, b, a});
+}
+
+// Each overlap involving a moved proxy is found from exactly one side: when both proxies moved, only the query of
+// the dynamic one with the larger id (or the dynamic one, against a static) records it. Reads the trees and the
+// moved flags only, so chunks of the move buffer can be queried at once.
+void BroadPhase::queryMoved(size_t first, size_t last, std::vector<BroadPhasePair>& to) const {
+    const DynamicTree& dynamicTree = m_trees[index(ProxyKind::Dynamic)];
+    const DynamicTree& staticTree = m_trees[index(ProxyKind::Static)];
+    for (size_t m = first; m < last; ++m) {
+        const ProxyKey key = m_moveBuffer[m];
+        const Aabb box = fatAabb(key);
+        if (key.kind == ProxyKind::Dynamic) {
+            dynamicTree.query(box, [&](int32_t other) {
+                const ProxyKey otherKey{other, ProxyKind::Dynamic};
+                if (other == key.proxy || (isMoved(otherKey) && other < key.proxy))
+                    return true;
+                addCandidate(to, key, otherKey);
+                return true;
+            });
+            staticTree.query(box, [&](int32_t other) {
+                addCandidate(to, key, ProxyKey{other, ProxyKind::Static});
+                return true;
+            });
+        } else {
+            dynamicTree.query(box, [&](int32_t other) {
+                const ProxyKey otherKey{other, ProxyKind::Dynamic};
+                if (!isMoved(otherKey))
+                    addCandidate(to, key, otherKey);
+                return true;
+            });
+        }
+    }
 }
 
 // Spreads the bits of a 21-bit integer so that three of them interleave into a 63-bit Morton code.
@@ -103,44 +135,38 @@ void BroadPhase::sortMoveBufferSpatially() {
         m_moveBuffer[i] = m_sortKeys[i].second;
 }
 
-void BroadPhase::updatePairs() {
+void BroadPhase::updatePairs(const ParallelFor& parallelFor) {
     m_candidates.clear();
     m_added.clear();
     m_removed.clear();
     m_stats = {};
     m_stats.movedProxies = static_cast<int32_t>(m_moveBuffer.size());
-
-    const DynamicTree& dynamicTree = m_trees[index(ProxyKind::Dynamic)];
-    const DynamicTree& staticTree = m_trees[index(ProxyKind::Static)];
     sortMoveBufferSpatially();
 
-    // Each overlap involving a moved proxy is found from exactly one side: when both proxies moved, only the
-    // query of the dynamic one with the larger id (or the dynamic one, against a static) records it.
-    for (const ProxyKey key : m_moveBuffer) {
-        const Aabb box = fatAabb(key);
-        if (key.kind == ProxyKind::Dynamic) {
-            dynamicTree.query(box, [&](int32_t other) {
-                const ProxyKey otherKey{other, ProxyKind::Dynamic};
-                if (other == key.proxy || (isMoved(otherKey) && other < key.proxy))
-                    return true;
-                addCandidate(key, otherKey);
-                return true;
-            });
-            staticTree.query(box, [&](int32_t other) {
-                addCandidate(key, ProxyKey{other, ProxyKind::Static});
-                return true;
-            });
-        } else {
-            dynamicTree.query(box, [&](int32_t other) {
-                const ProxyKey otherKey{other, ProxyKind::Dynamic};
-                if (!isMoved(otherKey))
-                    addCandidate(key, otherKey);
-                return true;
-            });
-        }
+    // Split up, the move buffer is queried in chunks of kChunk proxies, each into its own list; the lists are then
+    // joined in chunk order, so the candidates do not depend on how the chunks were shared out.
+    constexpr size_t kChunk = 64;
+    const size_t chunks = (m_moveBuffer.size() + kChunk - 1) / kChunk;
+    if (parallelFor && chunks > 1) {
+        if (m_chunkCandidates.size() < chunks)
+            m_chunkCandidates.resize(chunks);
+        parallelFor(chunks, [&](size_t begin, size_t end) {
+            for (size_t c = begin; c < end; ++c) {
+                m_chunkCandidates[c].clear();
+                queryMoved(c * kChunk, std::min(m_moveBuffer.size(), (c + 1) * kChunk), m_chunkCandidates[c]);
+            }
+        });
+        for (size_t c = 0; c < chunks; ++c)
+            m_candidates.insert(m_candidates.end(), m_chunkCandidates[c].begin(), m_chunkCandidates[c].end());
+    } else {
+        queryMoved(0, m_moveBuffer.size(), m_candidates);
     }
     m_stats.candidates = static_cast<int32_t>(m_candidates.size());
-    std::sort(m_candidates.begin(), m_candidates.end());
+    // BroadPhasePair's order, with the body ids compared as one 64-bit key first: they nearly always decide it.
+    std::sort(m_candidates.begin(), m_candidates.end(), [](const BroadPhasePair& a, const BroadPhasePair& b) {
+        const uint64_t ka = uint64_t(a.idA) << 32 | a.idB, kb = uint64_t(b.idA) << 32 | b.idB;
+        return ka != kb ? ka < kb : a < b;
+    });
     m_candidates.erase(std::unique(m_candidates.begin(), m_candidates.end()), m_candidates.end());
 
     // Old pairs can only stop overlapping if one of their proxies got a new fat box, i.e. moved.

@@ -9,6 +9,7 @@
 
 #include <compare>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -67,9 +68,13 @@ public:
     // Makes the proxy look for pairs at the next update even though its box did not change.
     void touchProxy(ProxyKey key);
 
+    // Calls body(begin, end) for ranges that together cover [0, count) once each, on one thread or several.
+    using ParallelFor = std::function<void(size_t count, const std::function<void(size_t begin, size_t end)>& body)>;
+
     // Brings pairs() up to date: only proxies created, reinserted or touched since the last call query the trees.
     // Afterwards pairs() holds exactly the pairs whose fat boxes overlap (never static with static), sorted.
-    void updatePairs();
+    // parallelFor, if given, runs the queries split up in fixed chunks of the moved proxies; the pairs are the same.
+    void updatePairs(const ParallelFor& parallelFor = {});
 
     std::span<const BroadPhasePair> pairs() const { return m_pairs; }
     // What the last updatePairs added to and removed from pairs(), both sorted.
@@ -95,7 +100,8 @@ private:
     static int index(ProxyKind kind) { return static_cast<int>(kind); }
     bool isMoved(ProxyKey key) const { return m_moved[index(key.kind)][key.proxy] != 0; }
     void markMoved(ProxyKey key);
-    void addCandidate(ProxyKey a, ProxyKey b);
+    void addCandidate(std::vector<BroadPhasePair>& to, ProxyKey a, ProxyKey b) const;
+    void queryMoved(size_t first, size_t last, std::vector<BroadPhasePair>& to) const;
     void sortMoveBufferSpatially();
 
     DynamicTree m_trees[2];
@@ -103,6 +109,7 @@ private:
     std::vector<ProxyKey> m_moveBuffer;
     std::vector<std::pair<uint64_t, ProxyKey>> m_sortKeys;
     std::vector<BroadPhasePair> m_candidates;
+    std::vector<std::vector<BroadPhasePair>> m_chunkCandidates; // per chunk of the move buffer (updatePairs())
     std::vector<BroadPhasePair> m_pairs;
     std::vector<BroadPhasePair> m_added;
     std::vector<BroadPhasePair> m_removed;

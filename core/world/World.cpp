@@ -228,13 +228,26 @@ void World::refreshTransforms() {
     // Bodies move only in solve() and CCD, both after the narrowphase, so these stay valid for the whole of
     // broadphase and narrowphase. Every body, not only the moving ones: one that fell asleep last step moved first.
     // Anchors never move: their boxes are taken once (create()) and their reach stays 0.
-    m_transforms.resize(m_state.size());
-    for (uint32_t i = 0; i < m_state.size(); ++i) {
-        m_transforms[i] = transform(i);
-        if (m_state.isStatic(i))
-            continue;
-        m_bounds[i] = m_shapes[i].worldBounds(m_transforms[i]);
-        m_reach[i] = glm::length(m_state.linearVelocity[i]) + glm::length(m_state.angularVelocity[i]) * m_radius[i];
+    // Each body alone, so a team shares the bodies out with the same results.
+    const size_t n = m_state.size();
+    m_transforms.resize(n);
+    const auto refresh = [&](size_t begin, size_t end) {
+        for (size_t k = begin; k < end; ++k) {
+            const uint32_t i = static_cast<uint32_t>(k);
+            m_transforms[i] = transform(i);
+            if (m_state.isStatic(i))
+                continue;
+            m_bounds[i] = m_shapes[i].worldBounds(m_transforms[i]);
+            m_reach[i] = glm::length(m_state.linearVelocity[i]) + glm::length(m_state.angularVelocity[i]) * m_radius[i];
+        }
+    };
+    if (m_team && n >= kMinBodiesForTeam) {
+        m_team->run([&](int member) {
+            const auto [begin, end] = ThreadTeam::share(0, n, member, m_team->size());
+            refresh(begin, end);
+        });
+    } else {
+        refresh(0, n);
     }
 }
 
@@ -255,8 +268,19 @@ void World::updateBroadphase() {
     }
 }
 
+std::function<void(size_t, const std::function<void(size_t, size_t)>&)> World::teamParallelFor() {
+    if (!m_team)
+        return {};
+    return [this](size_t count, const std::function<void(size_t, size_t)>& body) {
+        m_team->run([&](int member) {
+            const auto [begin, end] = ThreadTeam::share(0, count, member, m_team->size());
+            body(begin, end);
+        });
+    };
+}
+
 void World::findPairs() {
-    m_broadPhase.updatePairs();
+    m_broadPhase.updatePairs(teamParallelFor());
     const auto pairs = m_broadPhase.pairs();
     // Most steps the pair list is the one we already hold; then there is nothing to merge.
     // The bodies of each contact are kept beside the slot list (m_pairBodies), so neither this test nor the merge
@@ -932,13 +956,8 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
     cutIslands(scratch);
     // A big group's constraints are set up by the whole team (each one alone, so the results are the same).
     ContactSolver::ParallelFor parallelFor;
-    if (mayUseTeam && m_team && group.size() >= kMinBodiesForTeam)
-        parallelFor = [&](size_t count, const std::function<void(size_t, size_t)>& body) {
-            m_team->run([&](int member) {
-                const auto [begin, end] = ThreadTeam::share(0, count, member, m_team->size());
-                body(begin, end);
-            });
-        };
+    if (mayUseTeam && group.size() >= kMinBodiesForTeam)
+        parallelFor = teamParallelFor();
     solver.prepare(scratch.manifolds, scratch.indexA, scratch.indexB, scratch.friction, scratch.restitution, bodies,
                    scratch.centers, h, settings,
                    scratch.islandsCut > 0 ? std::span<const uint8_t>(scratch.part) : std::span<const uint8_t>(),
@@ -1101,10 +1120,12 @@ void World::continuousCollision() {
     // Fast bodies are swept against the anchors by conservative advancement on the signed distance: the body is moved
     // back to its first time of impact, where next step's speculative contact stops it. Dynamic-versus-dynamic
     // tunnelling is left to the speculative margin.
+    // Each body alone (it reads only the anchors), so a team shares the bodies out with the same results.
     const Real target = 0.25 * m_tuning.speculativeDistance;
-    for (uint32_t i = 0; i < m_state.size(); ++i) {
-        if (!m_state.isMoving(i))
-            continue;
+    struct Counts {
+        uint64_t bodies = 0, hits = 0;
+    };
+    const auto sweepBody = [&](uint32_t i, Counts& counts) {
         const Vec3 start = m_stepStartPosition[i];
         const Vec3 end = m_state.position[i];
         const Vec3 delta = end - start;
@@ -1113,8 +1134,8 @@ void World::continuousCollision() {
         const Real angle = 2.0 * std::acos(std::clamp(std::abs(glm::dot(q0, q1)), 0.0, 1.0));
         const Real sweep = glm::length(delta) + angle * m_radius[i];
         if (sweep <= m_tuning.ccdFraction * m_minExtent[i])
-            continue;
-        m_profile.count(Counter::CcdBodies, 1);
+            return;
+        ++counts.bodies;
 
         // Candidate anchors: the static tree over the swept box.
         const Quat shapeFromPrincipal = m_state.info[i].shapeFromPrincipal;
@@ -1152,8 +1173,25 @@ void World::continuousCollision() {
         if (toi < 1.0) {
             m_state.position[i] = start + delta * toi;
             m_state.orientation[i] = glm::normalize(glm::slerp(q0, q1, toi));
-            m_profile.count(Counter::CcdHits, 1);
+            ++counts.hits;
         }
+    };
+    const size_t n = m_state.size();
+    const int members = m_team && n >= kMinBodiesForTeam ? m_team->size() : 1;
+    std::vector<Counts> counts(static_cast<size_t>(members));
+    const auto job = [&](int member) {
+        const auto [begin, end] = ThreadTeam::share(0, n, member, members);
+        for (size_t k = begin; k < end; ++k)
+            if (m_state.isMoving(static_cast<uint32_t>(k)))
+                sweepBody(static_cast<uint32_t>(k), counts[static_cast<size_t>(member)]);
+    };
+    if (members > 1)
+        m_team->run(job);
+    else
+        job(0);
+    for (const Counts& c : counts) {
+        m_profile.count(Counter::CcdBodies, c.bodies);
+        m_profile.count(Counter::CcdHits, c.hits);
     }
 }
 

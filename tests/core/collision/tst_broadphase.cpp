@@ -82,7 +82,8 @@ ProxyKind kindOf(const Body& b) {
 
 // Runs a deterministic sequence of moves on the scene and returns the concatenated pair lists of every step,
 // so two runs can be compared element by element.
-std::vector<BroadPhasePair> runSequence(RandomScene scene, bool reverseInsertion, int steps) {
+std::vector<BroadPhasePair> runSequence(RandomScene scene, bool reverseInsertion, int steps,
+                                        const BroadPhase::ParallelFor& parallelFor = {}) {
     BroadPhase bp;
     std::vector<size_t> order(scene.bodies.size());
     std::iota(order.begin(), order.end(), size_t(0));
@@ -96,8 +97,10 @@ std::vector<BroadPhasePair> runSequence(RandomScene scene, bool reverseInsertion
     std::mt19937 rng(99);
     std::uniform_real_distribution<Real> u(-0.2, 0.2);
     for (int s = 0; s < steps; ++s) {
-        bp.updatePairs();
+        bp.updatePairs(parallelFor);
         all.insert(all.end(), bp.pairs().begin(), bp.pairs().end());
+        all.insert(all.end(), bp.addedPairs().begin(), bp.addedPairs().end());
+        all.insert(all.end(), bp.removedPairs().begin(), bp.removedPairs().end());
         for (Body& b : scene.bodies) {
             if (b.isStatic)
                 continue;
@@ -118,6 +121,7 @@ private slots:
     void matchesBruteForce_data();
     void matchesBruteForce();
     void orderIsIndependentOfTreeLayout();
+    void splitQueriesGiveTheSamePairs();
     void anchorsNeverPairWithAnchors();
     void destroyRemovesPairs();
     void rejectsBadBoxes();
@@ -261,6 +265,26 @@ void TestBroadPhase::orderIsIndependentOfTreeLayout() {
         QCOMPARE(reversed[i].idA, forward[i].idA);
         QCOMPARE(reversed[i].idB, forward[i].idB);
     }
+}
+
+void TestBroadPhase::splitQueriesGiveTheSamePairs() {
+    // The queries split in chunks, the ranges run in reverse order (as threads may finish in any order) and unevenly:
+    // every step's pairs, added and removed lists must equal those of the unsplit queries.
+    const RandomScene scene(11, 800);
+    size_t calls = 0, largestCount = 0;
+    const BroadPhase::ParallelFor reversed = [&](size_t count, const std::function<void(size_t, size_t)>& body) {
+        ++calls;
+        largestCount = std::max(largestCount, count);
+        const size_t cut = count / 3;
+        body(cut, count);
+        body(0, cut);
+    };
+    const std::vector<BroadPhasePair> serial = runSequence(scene, false, 6);
+    const std::vector<BroadPhasePair> split = runSequence(scene, false, 6, reversed);
+    QVERIFY(calls > 0);
+    QVERIFY(largestCount >= 8); // 640 dynamic proxies move each step: 10 chunks of 64
+    QVERIFY(serial.size() > 800);
+    QVERIFY(split == serial);
 }
 
 void TestBroadPhase::anchorsNeverPairWithAnchors() {

@@ -241,14 +241,10 @@ void World::refreshTransforms() {
             m_reach[i] = glm::length(m_state.linearVelocity[i]) + glm::length(m_state.angularVelocity[i]) * m_radius[i];
         }
     };
-    if (m_team && n >= kMinBodiesForTeam) {
-        m_team->run([&](int member) {
-            const auto [begin, end] = ThreadTeam::share(0, n, member, m_team->size());
-            refresh(begin, end);
-        });
-    } else {
+    if (m_team && n >= kMinBodiesForTeam)
+        teamParallelFor()(n, refresh);
+    else
         refresh(0, n);
-    }
 }
 
 void World::updateBroadphase() {
@@ -268,7 +264,7 @@ void World::updateBroadphase() {
     }
 }
 
-std::function<void(size_t, const std::function<void(size_t, size_t)>&)> World::teamParallelFor() {
+ContactSolver::ParallelFor World::teamParallelFor() {
     if (!m_team)
         return {};
     return [this](size_t count, const std::function<void(size_t, size_t)>& body) {

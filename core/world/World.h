@@ -222,8 +222,9 @@ private:
     static constexpr size_t kMinBodiesForTeam = 128;
     static constexpr size_t kMinLevelWidth = 16;
     int substepRefinement(Real massRatio) const;
-    // Runs body(begin, end) over [0, count) shared out to the team; empty without a team.
-    std::function<void(size_t, const std::function<void(size_t, size_t)>&)> teamParallelFor();
+    // Runs body(begin, end) over [0, count) shared out to the team; empty without a team. (The same type as
+    // BroadPhase::ParallelFor.)
+    ContactSolver::ParallelFor teamParallelFor();
     void heightsAboveSupport(std::span<const uint32_t> moving);
     // ContactSolver::kHoldA or kHoldB for a contact of a mixed island (m_anyHeight) that holds its lower body still,
     // else 0.

@@ -5,10 +5,10 @@
 namespace rl {
 
 int warmStart(const Manifold& previous, Manifold& current, const ContactCacheOptions& options) {
-    for (int i = 0; i < current.pointCount; ++i) {
+    for (int i = 0; i < current.pointCount; ++i)
         current.points[i].normalImpulse = 0.0;
-        current.points[i].tangentImpulse[0] = current.points[i].tangentImpulse[1] = 0.0;
-    }
+    current.frictionImpulse = Vec3(0.0);
+    current.twistImpulse = 0.0;
     if (previous.pointCount == 0 || glm::dot(previous.normal, current.normal) < options.minNormalCosine)
         return 0;
     bool used[4] = {false, false, false, false};
@@ -46,9 +46,12 @@ int warmStart(const Manifold& previous, Manifold& current, const ContactCacheOpt
             continue;
         const ContactPoint& old = previous.points[matchOf[i]];
         current.points[i].normalImpulse = old.normalImpulse;
-        current.points[i].tangentImpulse[0] = old.tangentImpulse[0];
-        current.points[i].tangentImpulse[1] = old.tangentImpulse[1];
         ++matched;
+    }
+    // The manifold's friction goes with it while any point persists: it is the same contact patch.
+    if (matched > 0) {
+        current.frictionImpulse = previous.frictionImpulse;
+        current.twistImpulse = previous.twistImpulse;
     }
     return matched;
 }

@@ -19,8 +19,8 @@ struct ContactCacheOptions {
     Real minNormalCosine = 0.8660254037844386;
 };
 
-// Copies normalImpulse and tangentImpulse from `previous` into the matching points of `current`; unmatched points
-// start at zero. Returns how many points were matched.
+// Copies normalImpulse from `previous` into the matching points of `current` (unmatched points start at zero), and
+// the manifold's friction and twist impulses when any point matched. Returns how many points were matched.
 int warmStart(const Manifold& previous, Manifold& current, const ContactCacheOptions& options = {});
 
 // Manifolds of the current frame, keyed by the ordered body pair (bodyA, bodyB). The broadphase must report a

@@ -10,14 +10,13 @@
 namespace rl {
 
 struct ContactPoint {
-    Vec3 localA{0.0};        // contact point on A, in A's body frame (relative to A's centre of mass)
-    Vec3 localB{0.0};        // contact point on B, in B's body frame
-    Vec3 position{0.0};      // world midpoint between the two witness points
-    Real separation = 0.0;   // signed distance along the normal; negative means penetration (m)
-    uint32_t featureId = 0;  // identifies the pair of features (faces/edges/vertices) that made the point
-    // Solver state carried across frames by the contact cache (warm starting).
+    Vec3 localA{0.0};       // contact point on A, in A's body frame (relative to A's centre of mass)
+    Vec3 localB{0.0};       // contact point on B, in B's body frame
+    Vec3 position{0.0};     // world midpoint between the two witness points
+    Real separation = 0.0;  // signed distance along the normal; negative means penetration (m)
+    uint32_t featureId = 0; // identifies the pair of features (faces/edges/vertices) that made the point
+    // Solver state carried across frames by the contact cache (warm starting). Friction is the manifold's.
     Real normalImpulse = 0.0;
-    Real tangentImpulse[2] = {0.0, 0.0};
 };
 
 struct Manifold {
@@ -26,6 +25,10 @@ struct Manifold {
     Vec3 normal{0.0, 1.0, 0.0}; // unit, world space, pointing from A to B
     int pointCount = 0;
     std::array<ContactPoint, 4> points{};
+    // Friction is solved once per manifold, at its friction centre (ContactSolver): the accumulated tangent impulse
+    // (world axes, in the contact plane) and the twist impulse about the normal, carried for warm starting.
+    Vec3 frictionImpulse{0.0};
+    Real twistImpulse = 0.0;
 };
 
 } // namespace rl

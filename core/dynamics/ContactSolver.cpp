@@ -21,9 +21,25 @@ namespace {
 // of a sweep is below the tolerance times the manifold's total impulse.
 constexpr int kRestitutionPasses = 32;
 constexpr Real kRestitutionTolerance = 1e-4;
+// A speculative point this far apart (m) weighs a quarter in the friction centre: the speculative distance.
+constexpr Real kCenterFalloff = 0.02;
 
 Vec3 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec3& rA, const Vec3& rB) {
     return (b.v + glm::cross(b.w, rB)) - (a.v + glm::cross(a.w, rA));
+}
+
+// x rounded to the nearest float: what the batches store (BatchPoint). The empty asm keeps the float in a register:
+// GCC 12 at -O3 vectorised two neighbouring static_cast<float> of doubles into one pair of multiplies and dropped
+// the rounding of both (the tangent block's masses came out unrounded while the batches held them rounded).
+inline Real roundedToFloat(Real x) {
+    float f = static_cast<float>(x);
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+    asm("" : "+x"(f));
+#else
+    volatile float kept = f;
+    f = kept;
+#endif
+    return f;
 }
 
 // r x d and I^-1 (r x d) of one side of a row, computed as ContactSolverWide.cpp's batches compute them.
@@ -85,7 +101,7 @@ inline void applyRowT(SolverBody& a, SolverBody& b, const Inverse& ia, const Inv
 // One manifold's constraint, for one step (see prepare()).
 void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, uint32_t indexB, Real friction,
                      Real restitution, uint8_t held, std::span<const SolverBody> bodies, std::span<const Vec3> centers,
-                     const ContactSolverSettings& settings) {
+                     Real h, const ContactSolverSettings& settings) {
     c.bodyA = indexA;
     c.bodyB = indexB;
     c.scaleA = held == ContactSolver::kHoldA ? 0.0 : 1.0;
@@ -110,26 +126,58 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
         p.rA = mp.position - centers[c.bodyA];
         p.rB = mp.position - centers[c.bodyB];
         // The separation and the masses are rounded to float, as the batches store them (see BatchPoint).
-        p.baseSeparation = static_cast<float>(mp.separation - glm::dot(p.rB - p.rA, c.normal));
-        const Vec3* directions[3] = {&c.normal, &c.tangent[0], &c.tangent[1]};
-        Real masses[3];
-        for (int row = 0; row < 3; ++row) {
-            const Vec3 angularA = angularOf(p.rA, *directions[row]), angularB = angularOf(p.rB, *directions[row]);
-            const Vec3 inertiaA = ia.inertia * angularA, inertiaB = ib.inertia * angularB;
-            const Real k = ia.mass + ib.mass + glm::dot(angularA, inertiaA) + glm::dot(angularB, inertiaB);
-            masses[row] = k > 0.0 ? static_cast<float>(1.0 / k) : 0.0;
-        }
-        p.normalMass = masses[0];
-        p.tangentMass[0] = masses[1];
-        p.tangentMass[1] = masses[2];
+        p.baseSeparation = roundedToFloat(mp.separation - glm::dot(p.rB - p.rA, c.normal));
+        const Vec3 angularA = angularOf(p.rA, c.normal), angularB = angularOf(p.rB, c.normal);
+        const Real normalK =
+            ia.mass + ib.mass + glm::dot(angularA, ia.inertia * angularA) + glm::dot(angularB, ib.inertia * angularB);
+        p.normalMass = normalK > 0.0 ? roundedToFloat(1.0 / normalK) : 0.0;
         p.normalImpulse = settings.warmStarting ? mp.normalImpulse : 0.0;
-
-        p.tangentImpulse[0] = settings.warmStarting ? mp.tangentImpulse[0] : 0.0;
-        p.tangentImpulse[1] = settings.warmStarting ? mp.tangentImpulse[1] : 0.0;
         p.maxNormalImpulse = 0.0;
         p.relativeVelocity = glm::dot(c.normal, relativeVelocity(a, b, p.rA, p.rB));
         impact = impact || p.relativeVelocity < -settings.restitutionThreshold;
     }
+
+    // The friction centre: the anchors' mean, with speculative points (still apart) weighted down the farther apart
+    // they are, so that the centre moves smoothly as points come and go.
+    Vec3 centerA(0.0), centerB(0.0);
+    Real weights = 0.0;
+    for (int k = 0; k < m.pointCount; ++k) {
+        const Real gap = 1.0 + std::max(m.points[k].separation, 0.0) / kCenterFalloff;
+        const Real w = 1.0 / (gap * gap);
+        centerA += w * c.points[k].rA;
+        centerB += w * c.points[k].rB;
+        weights += w;
+    }
+    if (weights > 0.0) {
+        centerA /= weights;
+        centerB /= weights;
+    }
+    c.centerA = centerA;
+    c.centerB = centerB;
+    for (int k = 0; k < m.pointCount; ++k)
+        c.points[k].leverArm = roundedToFloat(glm::length(c.points[k].rA - centerA));
+    // The tangent block K (2x2, symmetric) at the centre, inverted; the masses are rounded to float as the batches
+    // store them.
+    const Vec3 aA0 = angularOf(centerA, c.tangent[0]), aA1 = angularOf(centerA, c.tangent[1]);
+    const Vec3 aB0 = angularOf(centerB, c.tangent[0]), aB1 = angularOf(centerB, c.tangent[1]);
+    const Vec3 iA1 = ia.inertia * aA1, iB1 = ib.inertia * aB1;
+    const Real k00 = ia.mass + ib.mass + glm::dot(aA0, ia.inertia * aA0) + glm::dot(aB0, ib.inertia * aB0);
+    const Real k11 = ia.mass + ib.mass + glm::dot(aA1, iA1) + glm::dot(aB1, iB1);
+    const Real k01 = glm::dot(aA0, iA1) + glm::dot(aB0, iB1);
+    const Real det = k00 * k11 - k01 * k01;
+    const Real inverseDet = det > 0.0 ? 1.0 / det : 0.0;
+    c.frictionMass[0] = roundedToFloat(k11 * inverseDet);
+    c.frictionMass[1] = roundedToFloat(-k01 * inverseDet);
+    c.frictionMass[2] = roundedToFloat(k00 * inverseDet);
+    const Real twist = glm::dot(c.normal, ia.inertia * c.normal) + glm::dot(c.normal, ib.inertia * c.normal);
+    c.twistMass = twist > 0.0 ? roundedToFloat(1.0 / twist) : 0.0;
+    // The manifold keeps its friction impulse in world axes: the tangents follow the normal, which may have turned.
+    // Without friction nothing is carried, so that the sweeps, which then skip the friction rows, hold none.
+    const bool warmFriction = settings.warmStarting && settings.friction && c.friction > 0.0;
+    c.frictionImpulse[0] = warmFriction ? glm::dot(m.frictionImpulse, c.tangent[0]) : 0.0;
+    c.frictionImpulse[1] = warmFriction ? glm::dot(m.frictionImpulse, c.tangent[1]) : 0.0;
+    c.twistImpulse = warmFriction ? m.twistImpulse : 0.0;
+
     // An impact is solved deepest point first: a speculative point that is still apart must not push before the
     // point that touches first has taken the blow. A UV sphere landing on its pole, solved in manifold order,
     // let a ring vertex 1.9 mm up push first and bounced off spinning at 5.8 rad/s. Resting contacts keep the
@@ -140,6 +188,23 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
     if (impact)
         std::stable_sort(c.order, c.order + m.pointCount,
                          [&](uint8_t l, uint8_t r) { return m.points[l].separation < m.points[r].separation; });
+
+    // Restitution bounces off the normal speed at the instant of impact. A point still apart at the step start
+    // (separation s > 0, normal speed v on the flight the integrator follows, relative acceleration a along the
+    // normal from gravity) meets at the speed energy gives, v_c^2 = v^2 - 2 a s, whichever substep it lands in; a
+    // point already touching struck at or before the step start, at v. (Until 2026-11-26 the speed was taken at
+    // the end of the substep where the point first pushed, up to a substep's a h too fast, so the third apex of an
+    // e = 0.5 drop depended on where in the step the ball landed: -2.1 % at 8 substeps, +3.3 % at 6.)
+    for (int k = 0; k < m.pointCount; ++k) {
+        ContactConstraint::Point& p = c.points[k];
+        const Real accel = c.approachAcceleration, s = m.points[k].separation;
+        const Real v = p.relativeVelocity + settings.flightOffset * accel * h;
+        if (!(s > 0.0) || (v >= 0.0 && accel >= 0.0)) {
+            p.relativeVelocity = v; // touching already, or never approaching in free flight
+            continue;
+        }
+        p.relativeVelocity = -std::sqrt(std::max(v * v - 2.0 * accel * s, 0.0));
+    }
 }
 
 } // namespace
@@ -162,14 +227,13 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
     m_settings = settings;
     m_inverseH = h > 0.0 ? 1.0 / h : 0.0;
     m_h = h;
-    m_elapsed = 0.0;
     m_soft = softness(2.0 * kPi * settings.contactHertz, settings.dampingRatio, h);
 
     m_constraints.resize(manifolds.size());
     const auto setUp = [&](size_t begin, size_t end) {
         for (size_t i = begin; i < end; ++i)
             setUpConstraint(m_constraints[i], manifolds[i], solverIndexA[i], solverIndexB[i], friction[i],
-                            restitution[i], heldSide.empty() ? uint8_t(0) : heldSide[i], bodies, centers, settings);
+                            restitution[i], heldSide.empty() ? uint8_t(0) : heldSide[i], bodies, centers, h, settings);
     };
     if (parallelFor)
         parallelFor(manifolds.size(), setUp);
@@ -181,7 +245,7 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
     for (const ContactConstraint& c : m_constraints) {
         m_sweepRows.normalRows += static_cast<uint64_t>(c.pointCount);
         if (settings.friction && c.friction > 0.0)
-            m_sweepRows.frictionRows += 2u * static_cast<uint64_t>(c.pointCount);
+            m_sweepRows.frictionRows += 3u; // the tangent block (two rows) and the twist
     }
 }
 
@@ -291,24 +355,27 @@ void ContactSolver::buildBatches() {
                 set(batch.tangent[0], c.tangent[0], lane);
                 set(batch.tangent[1], c.tangent[1], lane);
                 batch.friction.v[l] = c.friction;
-                batch.approachAcceleration.v[l] = c.approachAcceleration;
                 batch.scaleA.v[l] = c.scaleA;
                 batch.scaleB.v[l] = c.scaleB;
                 batch.holds = batch.holds || c.scaleA != 1.0 || c.scaleB != 1.0;
+                set(batch.centerA, c.centerA, lane);
+                set(batch.centerB, c.centerB, lane);
+                for (int m = 0; m < 3; ++m)
+                    batch.frictionMass[m].v[l] = static_cast<float>(c.frictionMass[m]);
+                batch.twistMass.v[l] = static_cast<float>(c.twistMass);
+                batch.frictionImpulse[0].v[l] = c.frictionImpulse[0];
+                batch.frictionImpulse[1].v[l] = c.frictionImpulse[1];
+                batch.twistImpulse.v[l] = c.twistImpulse;
                 for (int k = 0; k < c.pointCount; ++k) {
                     const ContactConstraint::Point& p = c.points[c.order[k]];
                     BatchPoint& q = m_batchPoints[batch.firstPoint + static_cast<uint32_t>(k)];
                     set(q.rA, p.rA, lane);
                     set(q.rB, p.rB, lane);
                     q.baseSeparation.v[l] = static_cast<float>(p.baseSeparation);
-                    q.mass[0].v[l] = static_cast<float>(p.normalMass);
-                    q.mass[1].v[l] = static_cast<float>(p.tangentMass[0]);
-                    q.mass[2].v[l] = static_cast<float>(p.tangentMass[1]);
-                    q.impulse[0].v[l] = p.normalImpulse;
-                    q.impulse[1].v[l] = p.tangentImpulse[0];
-                    q.impulse[2].v[l] = p.tangentImpulse[1];
+                    q.mass.v[l] = static_cast<float>(p.normalMass);
+                    q.leverArm.v[l] = static_cast<float>(p.leverArm);
+                    q.impulse.v[l] = p.normalImpulse;
                     q.maxNormalImpulse.v[l] = p.maxNormalImpulse;
-                    q.relativeVelocity.v[l] = p.relativeVelocity;
                 }
             }
         }
@@ -325,14 +392,14 @@ void ContactSolver::syncFromBatches() const {
             if (batch.constraint[l] == kNoConstraint)
                 continue;
             ContactConstraint& c = m_constraints[batch.constraint[l]];
+            c.frictionImpulse[0] = batch.frictionImpulse[0].v[l];
+            c.frictionImpulse[1] = batch.frictionImpulse[1].v[l];
+            c.twistImpulse = batch.twistImpulse.v[l];
             for (int k = 0; k < c.pointCount; ++k) {
                 const BatchPoint& q = m_batchPoints[batch.firstPoint + static_cast<uint32_t>(k)];
                 ContactConstraint::Point& p = c.points[c.order[k]];
-                p.normalImpulse = q.impulse[0].v[l];
-                p.tangentImpulse[0] = q.impulse[1].v[l];
-                p.tangentImpulse[1] = q.impulse[2].v[l];
+                p.normalImpulse = q.impulse.v[l];
                 p.maxNormalImpulse = q.maxNormalImpulse.v[l];
-                p.relativeVelocity = q.relativeVelocity.v[l];
             }
         }
 }
@@ -344,7 +411,6 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies) {
 }
 
 void ContactSolver::warmStartSequential(std::span<SolverBody> bodies) {
-    m_elapsed += m_h;
     if (!m_settings.warmStarting)
         return;
     for (size_t segment = 0; segment <= kBoundarySegment; ++segment)
@@ -355,17 +421,44 @@ void ContactSolver::warmStartSequential(std::span<SolverBody> bodies) {
 
 namespace {
 
+// The friction rows of one manifold (see ContactConstraint): impulses j0, j1 along the tangents at the friction
+// centre, and jt about the normal. Both sides are read (the static entry 0 has zero velocities), only moving ones
+// written, in the order of the batches' lanes (ContactSolverWide.cpp).
+template <bool kStaticA, bool kStaticB>
+void applyFriction(SolverBody& a, SolverBody& b, const Inverse& ia, const Inverse& ib, const ContactConstraint& c,
+                   Real j0, Real j1) {
+    const Vec3 P = j0 * c.tangent[0] + j1 * c.tangent[1];
+    if constexpr (!kStaticA) {
+        a.v = a.v - ia.mass * P;
+        a.w = a.w - ia.inertia * glm::cross(c.centerA, P);
+    }
+    if constexpr (!kStaticB) {
+        b.v = b.v + ib.mass * P;
+        b.w = b.w + ib.inertia * glm::cross(c.centerB, P);
+    }
+}
+
+template <bool kStaticA, bool kStaticB>
+void applyTwist(SolverBody& a, SolverBody& b, const Inverse& ia, const Inverse& ib, const ContactConstraint& c,
+                Real jt) {
+    const Vec3 T = jt * c.normal;
+    if constexpr (!kStaticA)
+        a.w = a.w - ia.inertia * T;
+    if constexpr (!kStaticB)
+        b.w = b.w + ib.inertia * T;
+}
+
 template <bool kStaticA, bool kStaticB>
 void warmStartConstraint(const ContactConstraint& c, SolverBody& a, SolverBody& b) {
     const Inverse ia = inverseOf(a, c.scaleA), ib = inverseOf(b, c.scaleB);
     for (int k = 0; k < c.pointCount; ++k) {
         const ContactConstraint::Point& p = c.points[c.order[k]]; // the batches' order
-        if (p.normalImpulse == 0.0 && p.tangentImpulse[0] == 0.0 && p.tangentImpulse[1] == 0.0)
+        if (p.normalImpulse == 0.0)
             continue; // a speculative point that never pushed: nothing to apply
         applyRowT<kStaticA, kStaticB>(a, b, ia, ib, p, c.normal, p.normalImpulse);
-        applyRowT<kStaticA, kStaticB>(a, b, ia, ib, p, c.tangent[0], p.tangentImpulse[0]);
-        applyRowT<kStaticA, kStaticB>(a, b, ia, ib, p, c.tangent[1], p.tangentImpulse[1]);
     }
+    applyTwist<kStaticA, kStaticB>(a, b, ia, ib, c, c.twistImpulse);
+    applyFriction<kStaticA, kStaticB>(a, b, ia, ib, c, c.frictionImpulse[0], c.frictionImpulse[1]);
 }
 
 } // namespace
@@ -388,7 +481,7 @@ namespace {
 // sleepers), which never moves: its velocity, position change and rotation change are zero and identity, so the
 // terms that read it and the writes to it are left out. The results are the same as the general path's.
 template <bool kStaticA, bool kStaticB>
-void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool useBias, Real inverseH, Real elapsed,
+void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool useBias, Real inverseH,
                      const Softness& soft, const ContactSolverSettings& settings) {
     const Inverse ia = inverseOf(a, c.scaleA), ib = inverseOf(b, c.scaleB);
     for (int j = 0; j < c.pointCount; ++j) {
@@ -417,33 +510,46 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
         const Real newImpulse = std::max(p.normalImpulse + impulse, 0.0);
         impulse = newImpulse - p.normalImpulse;
         p.normalImpulse = newImpulse;
-        // Restitution bounces off the speed at the moment of impact, which for a speculative contact comes
-        // substeps after prepare() looked: gravity has added to it since. The solver's own vn is no measure of it:
-        // the impulses of the manifold's other points, already applied in this sweep, tilt it (a cube landing
-        // flat recorded 9.8 m/s at one corner and 12.6 m/s at another, and bounced off spinning).
-        if (impulse > 0.0 && p.maxNormalImpulse == 0.0)
-            p.relativeVelocity += c.approachAcceleration * elapsed;
         p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
         applyRowT<kStaticA, kStaticB>(a, b, ia, ib, p, c.normal, impulse);
     }
 
     if (!settings.friction || c.friction <= 0.0)
         return;
+    Real total = 0.0, twistLimit = 0.0;
     for (int k = 0; k < c.pointCount; ++k) {
-        ContactConstraint::Point& p = c.points[c.order[k]]; // the normal rows' order, as the batches
-        // No normal impulse and no friction impulse (a speculative point): the clamp would give zero.
-        if (p.normalImpulse == 0.0 && p.tangentImpulse[0] == 0.0 && p.tangentImpulse[1] == 0.0)
-            continue;
-        const Real maxFriction = c.friction * p.normalImpulse;
-        for (int t = 0; t < 2; ++t) {
-            const Real vt = rowVelocityT<kStaticA, kStaticB>(a, b, p, c.tangent[t]);
-            Real impulse = -p.tangentMass[t] * vt;
-            const Real newImpulse = std::clamp(p.tangentImpulse[t] + impulse, -maxFriction, maxFriction);
-            impulse = newImpulse - p.tangentImpulse[t];
-            p.tangentImpulse[t] = newImpulse;
-            applyRowT<kStaticA, kStaticB>(a, b, ia, ib, p, c.tangent[t], impulse);
-        }
+        const ContactConstraint::Point& p = c.points[c.order[k]];
+        total = total + p.normalImpulse;
+        twistLimit = twistLimit + p.leverArm * p.normalImpulse;
     }
+    // Nothing pushes and nothing was held: every clamp below would give zero.
+    if (total == 0.0 && c.twistImpulse == 0.0 && c.frictionImpulse[0] == 0.0 && c.frictionImpulse[1] == 0.0)
+        return;
+    // Twist about the normal.
+    {
+        const Real spin = glm::dot(c.normal, b.w - a.w);
+        const Real limit = c.friction * twistLimit;
+        const Real newImpulse = std::clamp(c.twistImpulse - c.twistMass * spin, -limit, limit);
+        const Real impulse = newImpulse - c.twistImpulse;
+        c.twistImpulse = newImpulse;
+        applyTwist<kStaticA, kStaticB>(a, b, ia, ib, c, impulse);
+    }
+    // Sliding at the friction centre: both tangents at once, clamped to the friction disc.
+    const Vec3 vr = (b.v + glm::cross(b.w, c.centerB)) - (a.v + glm::cross(a.w, c.centerA));
+    const Real v0 = glm::dot(vr, c.tangent[0]), v1 = glm::dot(vr, c.tangent[1]);
+    Real n0 = c.frictionImpulse[0] - (c.frictionMass[0] * v0 + c.frictionMass[1] * v1);
+    Real n1 = c.frictionImpulse[1] - (c.frictionMass[1] * v0 + c.frictionMass[2] * v1);
+    const Real limit = c.friction * total;
+    const Real length2 = n0 * n0 + n1 * n1;
+    if (length2 > limit * limit) {
+        const Real scale = limit / std::sqrt(length2);
+        n0 = n0 * scale;
+        n1 = n1 * scale;
+    }
+    const Real j0 = n0 - c.frictionImpulse[0], j1 = n1 - c.frictionImpulse[1];
+    c.frictionImpulse[0] = n0;
+    c.frictionImpulse[1] = n1;
+    applyFriction<kStaticA, kStaticB>(a, b, ia, ib, c, j0, j1);
 }
 
 } // namespace
@@ -465,11 +571,11 @@ void ContactSolver::solveOne(std::span<SolverBody> bodies, ContactConstraint& c,
     SolverBody& a = bodies[c.bodyA];
     SolverBody& b = bodies[c.bodyB];
     if (c.bodyA == 0)
-        solveConstraint<true, false>(c, a, b, useBias, m_inverseH, m_elapsed, m_soft, m_settings);
+        solveConstraint<true, false>(c, a, b, useBias, m_inverseH, m_soft, m_settings);
     else if (c.bodyB == 0)
-        solveConstraint<false, true>(c, a, b, useBias, m_inverseH, m_elapsed, m_soft, m_settings);
+        solveConstraint<false, true>(c, a, b, useBias, m_inverseH, m_soft, m_settings);
     else
-        solveConstraint<false, false>(c, a, b, useBias, m_inverseH, m_elapsed, m_soft, m_settings);
+        solveConstraint<false, false>(c, a, b, useBias, m_inverseH, m_soft, m_settings);
 }
 
 void ContactSolver::countSweep() {
@@ -501,7 +607,7 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
             if (p.relativeVelocity > -m_settings.restitutionThreshold || p.maxNormalImpulse == 0.0)
                 continue;
             bouncing[k] = true;
-            target[k] = -c.restitution * p.relativeVelocity - (1.0 + c.restitution) * 0.5 * h * c.approachAcceleration;
+            target[k] = -c.restitution * p.relativeVelocity - m_settings.flightOffset * c.approachAcceleration * h;
             ++count;
         }
         const int passes = count == 1 ? 1 : kRestitutionPasses;
@@ -534,9 +640,9 @@ void ContactSolver::storeImpulses(std::span<Manifold> manifolds) const {
         const ContactConstraint& c = m_constraints[i];
         for (int k = 0; k < c.pointCount; ++k) {
             manifolds[i].points[k].normalImpulse = c.points[k].normalImpulse;
-            manifolds[i].points[k].tangentImpulse[0] = c.points[k].tangentImpulse[0];
-            manifolds[i].points[k].tangentImpulse[1] = c.points[k].tangentImpulse[1];
         }
+        manifolds[i].frictionImpulse = c.frictionImpulse[0] * c.tangent[0] + c.frictionImpulse[1] * c.tangent[1];
+        manifolds[i].twistImpulse = c.twistImpulse;
     }
 }
 

@@ -47,6 +47,11 @@ struct ContactSolverSettings {
     // Gravity (m/s^2) of the moving bodies. The restitution pass uses it to turn the solver's velocities into the
     // speeds at the instant of impact (see applyRestitution()).
     Vec3 gravity{0.0};
+    // Where a body's stored velocity v sits on its free flight under constant acceleration a: the integrator moves
+    // it as the exact parabola through its positions whose velocity is v + flightOffset a h (h the substep). That is
+    // +1/2 for symplectic Euler (x += (v + a h) h), 0 for Verlet and RK4 (exact), -1/2 for explicit Euler
+    // (x += v h before v += a h). The restitution pass measures impacts and launches bounces on that parabola.
+    Real flightOffset = 0.5;
     bool friction = true;
     bool restitution = true;
     bool warmStarting = true;
@@ -54,7 +59,7 @@ struct ContactSolverSettings {
 
 struct ContactSolverCounters {
     uint64_t normalRows = 0;   // normal constraint rows solved (points x iterations)
-    uint64_t frictionRows = 0; // tangent rows solved
+    uint64_t frictionRows = 0; // friction rows solved: two tangents and the twist per manifold and sweep
     uint64_t restitutionRows = 0;
 };
 
@@ -68,21 +73,30 @@ struct ContactConstraint {
         // where a sweep needs them, not stored: 12 vectors a point were 70 % of a constraint's size, and prepare(),
         // storeImpulses() and the restitution pass streamed them through the cache for every constraint.
         Real normalMass = 0.0;
-        Real tangentMass[2] = {0.0, 0.0};
         Real normalImpulse = 0.0;
-        Real tangentImpulse[2] = {0.0, 0.0};
         Real maxNormalImpulse = 0.0;
-        Real relativeVelocity = 0.0; // normal approach speed at the step start, at impact once it pushes
+        Real relativeVelocity = 0.0; // normal speed at impact (prepare() projects it from the step start)
+        Real leverArm = 0.0;         // distance from the friction centre: its normal impulse's share of the twist limit
     };
     uint32_t bodyA = 0, bodyB = 0;
     Vec3 normal{0.0, 1.0, 0.0};
     Vec3 tangent[2];
     Real friction = 0.0;
     Real restitution = 0.0;
-    Real approachAcceleration = 0.0; // normal relative acceleration from gravity, for the approach speed
+    Real approachAcceleration = 0.0; // normal relative acceleration from gravity, for the speed at impact
     int pointCount = 0;
     Point points[4];
     uint8_t order[4] = {0, 1, 2, 3}; // the normal rows' solve order: by separation at the step start
+    // Friction acts once per manifold, at its friction centre (the anchors' mean): the two tangent rows solved as one
+    // 2x2 block and clamped to the disc of radius friction x the manifold's normal impulse, and a twist row about the
+    // normal, clamped to friction x the sum of each point's normal impulse times its distance from the centre.
+    // (Box3D's "central friction". Per-point friction took eight rows for a face contact where this takes three, and
+    // clamped each tangent alone, a square instead of Coulomb's disc.)
+    Vec3 centerA{0.0}, centerB{0.0};        // the friction centre relative to each centre of mass, world axes
+    Real frictionMass[3] = {0.0, 0.0, 0.0}; // the inverse of the 2x2 tangent block: (0,0), (0,1), (1,1)
+    Real frictionImpulse[2] = {0.0, 0.0};   // accumulated, along tangent[0] and tangent[1]
+    Real twistMass = 0.0;
+    Real twistImpulse = 0.0;
     // 0 for a side held still by this constraint (its inverse mass and inertia count as zero here, see prepare()'s
     // heldSide), else 1. Multiplying by 1 changes no bit, so constraints that hold nothing give the same numbers.
     Real scaleA = 1.0, scaleB = 1.0;
@@ -116,9 +130,8 @@ public:
     static constexpr size_t kParts = 2;
     static constexpr size_t kBoundarySegment = kParts; // segments 0 .. kParts - 1 are the parts
 
-    // Called once per substep, after the velocities were integrated: starts the substep (the time since the step
-    // began, which turns the approach speed recorded by prepare() into the speed at impact) and applies the
-    // impulses of the last step.
+    // Called once per substep, after the velocities were integrated: applies the accumulated impulses (those of
+    // the last step at first, then this step's so far).
     void warmStart(std::span<SolverBody> bodies);
     // useBias = true: the soft solve that pushes overlap apart; false: the relax pass that removes the bias velocity.
     void solve(std::span<SolverBody> bodies, bool useBias);
@@ -147,10 +160,7 @@ public:
     std::pair<size_t, size_t> segmentBatches(size_t segment) const {
         return {m_batchLevelStart[m_segmentLevelStart[segment]], m_batchLevelStart[m_segmentLevelStart[segment + 1]]};
     }
-    void beginSubstep() {
-        m_elapsed += m_h;
-        m_batchesAhead = true;
-    }
+    void beginSubstep() { m_batchesAhead = true; }
     void warmStartBatchRange(std::span<SolverBody> bodies, size_t begin, size_t end);
     void solveBatchRange(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
     void countSweep();
@@ -160,13 +170,13 @@ public:
     void warmStartSequential(std::span<SolverBody> bodies);
     void solveSequential(std::span<SolverBody> bodies, bool useBias);
 
-    // Bounces every point that approached faster than the threshold and pushed back: its normal speed becomes
-    // -e times the approach speed. Both are speeds at the instant of impact. The solver's velocities are means over
-    // a substep (the position update is x += v h), which under a constant relative acceleration a_n along the normal
-    // (gravity on one body of the pair, not the other) lag the instantaneous speed by a_n h / 2: the approach speed
-    // was recorded a_n h / 2 too slow, and a body that leaves at the stored speed climbs as if it had left a_n h / 2
-    // slower. So the target is -e vn - (1 + e) a_n h / 2. Without it each bounce lost (1 + e) g h / 2 of speed, and
-    // the third apex of an e = 0.5 drop from 5 m came out 5.0 % low (issue 4 asks for 3 %).
+    // Bounces every point that approached faster than the threshold and pushed back: it leaves at -e times its
+    // normal speed at the instant of impact (prepare() projects that from the step start, see setUpConstraint()).
+    // Speeds are those of the flight the integrator actually moves along (ContactSolverSettings::flightOffset): under
+    // symplectic Euler a body that leaves at the stored speed u climbs as if it had left at u + a_n h / 2, where a_n
+    // is the relative acceleration along the normal (gravity on one body of the pair, not the other), so the target
+    // is -e v_impact - flightOffset a_n h. Without the offsets each bounce lost (1 + e) g h / 2 of speed, and the
+    // third apex of an e = 0.5 drop from 5 m came out 5.0 % low (issue 4 asks for 3 %).
     void applyRestitution(std::span<SolverBody> bodies);
     // Writes the accumulated impulses back to the manifolds for warm starting in the next step.
     void storeImpulses(std::span<Manifold> manifolds) const;
@@ -195,7 +205,11 @@ private:
         uint32_t constraint[4] = {kNoConstraint, kNoConstraint, kNoConstraint, kNoConstraint};
         uint32_t firstPoint = 0, pointCount = 0;
         Lanes normal[3], tangent[2][3];
-        Lanes friction, approachAcceleration;
+        Lanes friction;
+        Lanes centerA[3], centerB[3]; // the friction centres
+        FloatLanes frictionMass[3];   // the constraints' frictionMass
+        FloatLanes twistMass;         // likewise
+        Lanes frictionImpulse[2], twistImpulse;
         Lanes scaleA, scaleB; // the constraints' scaleA, scaleB
         bool holds = false;   // a lane holds a side still: the sweeps scale that side's inverse mass and inertia
     };
@@ -208,9 +222,10 @@ private:
     struct BatchPoint {
         Lanes rA[3], rB[3];
         FloatLanes baseSeparation;
-        FloatLanes mass[3]; // normal, tangent 0, tangent 1
-        Lanes impulse[3];   // accumulated, likewise
-        Lanes maxNormalImpulse, relativeVelocity;
+        FloatLanes mass;     // normal
+        FloatLanes leverArm; // distance from the friction centre
+        Lanes impulse;       // accumulated normal impulse
+        Lanes maxNormalImpulse;
     };
     static constexpr uint32_t kNoConstraint = 0xffffffffu;
 
@@ -233,7 +248,6 @@ private:
     ContactSolverSettings m_settings;
     Real m_inverseH = 0.0;
     Real m_h = 0.0;
-    Real m_elapsed = 0.0; // time from the step start to the end of the current substep's velocity update
     Softness m_soft;
     ContactSolverCounters m_counters;
     ContactSolverCounters m_sweepRows; // rows of one sweep over every constraint

@@ -10,6 +10,7 @@
 #include "dynamics/ContactSolver.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstring>
 
@@ -61,6 +62,9 @@ RL_LANES_INLINE V operator*(const V& a, const V& b) {
 RL_LANES_INLINE V operator-(const V& a) {
     return perLane<V>([&](int l) { return -a.v[l]; });
 }
+RL_LANES_INLINE V operator/(const V& a, const V& b) {
+    return perLane<V>([&](int l) { return a.v[l] / b.v[l]; });
+}
 RL_LANES_INLINE Mask operator<(const V& a, const V& b) {
     return perLane<Mask>([&](int l) { return a.v[l] < b.v[l]; });
 }
@@ -105,13 +109,25 @@ RL_LANES_INLINE V get(const ContactSolver::FloatLanes& lanes) {
     return V{lanes.v[0], lanes.v[1], lanes.v[2], lanes.v[3]};
 }
 #endif
-// Whether any lane of any of the three is not zero.
-RL_LANES_INLINE bool anyNonZero(const Lanes* three) {
+// Whether any lane is not zero.
+RL_LANES_INLINE bool anyNonZero(const Lanes& lanes) {
     bool any = false;
-    for (int row = 0; row < 3; ++row)
-        for (int l = 0; l < 4; ++l)
-            any = any || three[row].v[l] != 0.0;
+    for (int l = 0; l < 4; ++l)
+        any = any || lanes.v[l] != 0.0;
     return any;
+}
+RL_LANES_INLINE bool anyNonZero(const V& x) {
+    bool any = false;
+    for (int l = 0; l < 4; ++l)
+        any = any || x[l] != 0.0;
+    return any;
+}
+// std::sqrt per lane.
+RL_LANES_INLINE V sqrtOf(const V& x) {
+    V r = x;
+    for (int l = 0; l < 4; ++l)
+        r[l] = std::sqrt(x[l]);
+    return r;
 }
 // std::max(a, b): a < b ? b : a, per lane.
 RL_LANES_INLINE V maxOf(const V& a, const V& b) {
@@ -316,6 +332,22 @@ RL_LANES_INLINE void applyRow(Side& a, Side& b, const Row& row, const V& j) {
     b.w = b.w + j * row.inertiaB;
 }
 
+// The friction rows of a batch's manifolds, as applyFriction() and applyTwist() in ContactSolver.cpp: impulses j0, j1
+// along the tangents at the friction centres, jt about the normal.
+RL_LANES_INLINE void applyFriction(Side& a, Side& b, const L3 tangent[2], const L3& centerA, const L3& centerB,
+                                   const V& j0, const V& j1) {
+    const L3 P = j0 * tangent[0] + j1 * tangent[1];
+    a.v = a.v - a.invMass * P;
+    a.w = a.w - a.invInertia * cross(centerA, P);
+    b.v = b.v + b.invMass * P;
+    b.w = b.w + b.invInertia * cross(centerB, P);
+}
+RL_LANES_INLINE void applyTwist(Side& a, Side& b, const L3& normal, const V& jt) {
+    const L3 T = jt * normal;
+    a.w = a.w - a.invInertia * T;
+    b.w = b.w + b.invInertia * T;
+}
+
 } // namespace
 
 RL_WIDE_CLONES void ContactSolver::warmStartBatchRange(std::span<SolverBody> bodies, size_t begin, size_t end) {
@@ -335,10 +367,11 @@ RL_WIDE_CLONES void ContactSolver::warmStartBatchRange(std::span<SolverBody> bod
             if (!anyNonZero(p.impulse))
                 continue; // speculative points that never pushed, in every lane: nothing to apply
             const L3 rA = load(p.rA), rB = load(p.rB);
-            applyRow(a, b, makeRow(a, b, normal, rA, rB), get(p.impulse[0]));
-            applyRow(a, b, makeRow(a, b, tangent[0], rA, rB), get(p.impulse[1]));
-            applyRow(a, b, makeRow(a, b, tangent[1], rA, rB), get(p.impulse[2]));
+            applyRow(a, b, makeRow(a, b, normal, rA, rB), get(p.impulse));
         }
+        applyTwist(a, b, normal, get(batch.twistImpulse));
+        applyFriction(a, b, tangent, load(batch.centerA), load(batch.centerB), get(batch.frictionImpulse[0]),
+                      get(batch.frictionImpulse[1]));
         scatter(a, bodies, batch.bodyA);
         scatter(b, bodies, batch.bodyB);
     }
@@ -346,7 +379,7 @@ RL_WIDE_CLONES void ContactSolver::warmStartBatchRange(std::span<SolverBody> bod
 
 RL_WIDE_CLONES void ContactSolver::solveBatchRange(std::span<SolverBody> bodies, bool useBias, size_t begin,
                                                    size_t end) {
-    const V inverseH = splat(m_inverseH), elapsed = splat(m_elapsed), zero = splat(0.0);
+    const V inverseH = splat(m_inverseH), zero = splat(0.0);
     const V biasRate = splat(m_soft.biasRate), maxPushout = splat(-m_settings.maxPushoutSpeed);
     const V softMass = splat(useBias ? m_soft.massScale : 1.0),
             softImpulse = splat(useBias ? m_soft.impulseScale : 0.0);
@@ -375,37 +408,53 @@ RL_WIDE_CLONES void ContactSolver::solveBatchRange(std::span<SolverBody> bodies,
             const V impulseScale = select(speculative, zero, softImpulse);
             const Row row = makeRow(a, b, normal, rA, rB);
             const V vn = rowVelocity(a, b, row);
-            const V accumulated = get(p.impulse[0]);
-            const V trial = (-get(p.mass[0]) * massScale) * (vn + velocityBias) - impulseScale * accumulated;
+            const V accumulated = get(p.impulse);
+            const V trial = (-get(p.mass) * massScale) * (vn + velocityBias) - impulseScale * accumulated;
             const V total = maxOf(accumulated + trial, zero);
             const V impulse = total - accumulated;
-            put(p.impulse[0], total);
-            // The approach speed at impact (see solveConstraint() in ContactSolver.cpp).
-            const V maxImpulse = get(p.maxNormalImpulse);
-            const V relative = get(p.relativeVelocity);
-            put(p.relativeVelocity, select(impulse > zero && maxImpulse == zero,
-                                           relative + get(batch.approachAcceleration) * elapsed, relative));
-            put(p.maxNormalImpulse, maxOf(maxImpulse, impulse));
+            put(p.impulse, total);
+            put(p.maxNormalImpulse, maxOf(get(p.maxNormalImpulse), impulse));
             applyRow(a, b, row, impulse);
         }
         if (friction) {
-            const V coefficient = get(batch.friction);
+            // The manifolds' friction (solveConstraint() in ContactSolver.cpp): the twist, then the tangent block at
+            // the friction centre, clamped to the disc.
+            V total = zero, twistLimit = zero;
             for (uint32_t k = 0; k < batch.pointCount; ++k) {
-                BatchPoint& p = m_batchPoints[batch.firstPoint + k];
-                // No lane has a normal or friction impulse (speculative points): every clamp would give zero.
-                if (!anyNonZero(p.impulse))
-                    continue;
-                const V maxFriction = coefficient * get(p.impulse[0]);
-                const V minFriction = -maxFriction;
-                const L3 rA = load(p.rA), rB = load(p.rB);
-                for (int t = 0; t < 2; ++t) {
-                    const Row row = makeRow(a, b, load(batch.tangent[t]), rA, rB);
-                    const V vt = rowVelocity(a, b, row);
-                    const V accumulated = get(p.impulse[1 + t]);
-                    const V total = clampTo(accumulated + (-get(p.mass[1 + t])) * vt, minFriction, maxFriction);
-                    put(p.impulse[1 + t], total);
-                    applyRow(a, b, row, total - accumulated);
+                const BatchPoint& p = m_batchPoints[batch.firstPoint + k];
+                const V impulse = get(p.impulse);
+                total = total + impulse;
+                twistLimit = twistLimit + get(p.leverArm) * impulse;
+            }
+            const V twist = get(batch.twistImpulse);
+            const V f0 = get(batch.frictionImpulse[0]), f1 = get(batch.frictionImpulse[1]);
+            // In no lane does anything push or hold: every clamp would give zero.
+            if (anyNonZero(total) || anyNonZero(twist) || anyNonZero(f0) || anyNonZero(f1)) {
+                const V coefficient = get(batch.friction);
+                const L3 tangent[2] = {load(batch.tangent[0]), load(batch.tangent[1])};
+                const L3 centerA = load(batch.centerA), centerB = load(batch.centerB);
+                {
+                    const V spin = dot(normal, b.w - a.w);
+                    const V limit = coefficient * twistLimit;
+                    const V newImpulse = clampTo(twist - get(batch.twistMass) * spin, -limit, limit);
+                    put(batch.twistImpulse, newImpulse);
+                    applyTwist(a, b, normal, newImpulse - twist);
                 }
+                const L3 vr = (b.v + cross(b.w, centerB)) - (a.v + cross(a.w, centerA));
+                const V v0 = dot(vr, tangent[0]), v1 = dot(vr, tangent[1]);
+                const V m00 = get(batch.frictionMass[0]), m01 = get(batch.frictionMass[1]),
+                        m11 = get(batch.frictionMass[2]);
+                V n0 = f0 - (m00 * v0 + m01 * v1);
+                V n1 = f1 - (m01 * v0 + m11 * v1);
+                const V limit = coefficient * total;
+                const V length2 = n0 * n0 + n1 * n1;
+                const auto outside = length2 > limit * limit;
+                const V scale = limit / sqrtOf(length2); // used only where outside: length2 > 0 there
+                n0 = select(outside, n0 * scale, n0);
+                n1 = select(outside, n1 * scale, n1);
+                put(batch.frictionImpulse[0], n0);
+                put(batch.frictionImpulse[1], n1);
+                applyFriction(a, b, tangent, centerA, centerB, n0 - f0, n1 - f1);
             }
         }
         scatter(a, bodies, batch.bodyA);

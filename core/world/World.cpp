@@ -158,6 +158,9 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
         w.m_damping = Damping{ws.linearDamping, ws.angularDamping};
     w.m_solverSettings.contactHertz = 0.25 * w.m_fps * w.m_substeps;
     w.m_solverSettings.gravity = w.m_gravity;
+    w.m_solverSettings.flightOffset = w.m_integrator == Integrator::SymplecticEuler ? 0.5
+                                      : w.m_integrator == Integrator::ExplicitEuler ? -0.5
+                                                                                    : 0.0;
     w.m_solverSettings.friction = fx.has(Effect::Friction);
     w.m_solverSettings.restitution = fx.has(Effect::Restitution);
 
@@ -947,6 +950,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
     toSolver(0, group.size());
     ContactSolverSettings settings = m_solverSettings;
     settings.contactHertz = 0.25 * m_fps * substeps; // a quarter of the substep rate (see ContactSolverSettings)
+
     ContactSolver& solver = scratch.solver;
     solver.resetCounters();
     cutIslands(scratch);

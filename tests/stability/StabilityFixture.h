@@ -14,11 +14,14 @@ namespace rl::test {
 
 inline World makeWorld(const Scene& scene, const WorldOptions& given = {}) {
     WorldOptions options = given;
-    // Experiments only: RL_TEST_SUBSTEPS / RL_TEST_ITERATIONS override the defaults the cases are judged at.
+    // Experiments only: RL_TEST_SUBSTEPS / RL_TEST_ITERATIONS / RL_TEST_INTEGRATOR override the defaults the cases
+    // are judged at.
     if (const char* s = std::getenv("RL_TEST_SUBSTEPS"); s && !options.substeps)
         options.substeps = std::atoi(s);
     if (const char* s = std::getenv("RL_TEST_ITERATIONS"); s && !options.iterations)
         options.iterations = std::atoi(s);
+    if (const char* s = std::getenv("RL_TEST_INTEGRATOR"); s && !options.integrator)
+        options.integrator = parseIntegrator(s);
     Result<World> w = World::create(scene, options);
     if (!w)
         qFatal("%s", w.error().toString().c_str());

@@ -34,9 +34,30 @@ private slots:
         QVERIFY(std::abs(distance - exact) < 0.02 * exact);
     }
 
+    // Issue 4 asks for the first three apexes of an e = 0.5 drop within 3 % of e^(2n) h0, at default settings. The
+    // restitution pass takes the speed at impact from energy on the flight the integrator follows and launches on
+    // it (ContactSolver::applyRestitution()), so the apexes no longer depend on where in a step the ball lands nor
+    // on the integrator: every row below measured within 0.4 % (2026-11-26); before, the third apex was -2.1 % at
+    // 8 substeps and +3.3 % at 6. The rows hold them to 1 %.
+    void bounceApexHeights_data() {
+        QTest::addColumn<int>("substeps");
+        QTest::addColumn<QString>("integrator");
+        QTest::newRow("default settings") << 0 << QString();
+        for (const char* integrator : {"symplectic-euler", "explicit-euler", "verlet", "rk4"})
+            for (int substeps : {4, 6})
+                QTest::addRow("%s, %d substeps", integrator, substeps) << substeps << QString(integrator);
+    }
+
     void bounceApexHeights() {
+        QFETCH(int, substeps);
+        QFETCH(QString, integrator);
         const Real h0 = 5.0, e = 0.5;
-        World w = makeWorld(scenes::drop(h0, e));
+        WorldOptions options;
+        if (substeps > 0)
+            options.substeps = substeps;
+        if (!integrator.isEmpty())
+            options.integrator = parseIntegrator(integrator.toStdString());
+        World w = makeWorld(scenes::drop(h0, e), options);
         std::vector<Real> apexes;
         Real previousVy = 0.0;
         run(w, 600, [&](int) {
@@ -46,15 +67,38 @@ private slots:
             previousVy = vy;
         });
         QVERIFY(apexes.size() >= 3);
-        // Issue 4: within 3 % on all three. Before the restitution pass took the speeds at the instant of impact
-        // (ContactSolver::applyRestitution) the losses compounded to -0.7 %, -2.3 %, -5.0 % (measured).
-        const Real tolerance[3] = {0.03, 0.03, 0.03};
         for (int n = 1; n <= 3; ++n) {
             const Real expected = std::pow(e, 2.0 * n) * h0;
             qInfo("bounce %d: apex %.4f m, expected %.4f m (%.2f %%)", n, apexes[n - 1], expected,
                   100.0 * (apexes[n - 1] - expected) / expected);
-            QVERIFY(std::abs(apexes[n - 1] - expected) < tolerance[n - 1] * expected);
+            QVERIFY(std::abs(apexes[n - 1] - expected) < 0.01 * expected);
         }
+    }
+
+    // Twist friction: a cube set spinning about the vertical on the floor stops as Coulomb friction at its four
+    // corner contacts says, and stays where it is. Each corner is d = 0.5 sqrt(2) m from the centre and carries a
+    // quarter of the weight, so the friction torque is mu m g d and the cube (I = m / 6) turns through
+    // w0^2 / (2 mu g d 6) before it stops.
+    void spinningCubeStopsByTwistFriction() {
+        const Real mu = 0.1, w0 = 2.0, g = 9.81;
+        Scene scene = scenes::stack(1);
+        scene.materials.push_back({"Slippery", 1000.0, mu, 0.0});
+        for (BodyDef& body : scene.bodies)
+            body.material = "Slippery";
+        scene.bodies[1].angularVelocity = Vec3(0.0, w0, 0.0);
+        World w = makeWorld(scene);
+        const Vec3 start = w.centerOfMass(1);
+        run(w, 120);
+        const Quat turn = w.rotationSinceStart(1);
+        const Real angle = 2.0 * std::atan2(glm::length(Vec3(turn.x, turn.y, turn.z)), std::abs(turn.w));
+        const Real expected = w0 * w0 / (2.0 * mu * g * 0.5 * std::sqrt(2.0) * 6.0);
+        const Real moved = glm::length(w.centerOfMass(1) - start);
+        qInfo("cube spun at %.1f rad/s, mu %.1f: turned %.4f rad, expected %.4f rad (%.2f %%); centre moved %.3g m, "
+              "spin at 2 s %.3g rad/s",
+              w0, mu, angle, expected, 100.0 * (angle - expected) / expected, moved, glm::length(w.angularVelocity(1)));
+        QVERIFY(std::abs(angle - expected) < 0.03 * expected);
+        QVERIFY(moved < 1e-3);
+        QVERIFY(glm::length(w.angularVelocity(1)) < 1e-3);
     }
 
     void tumblingIntermediateAxisFlips() {

@@ -27,7 +27,8 @@ Manifold restingCube(const Vec3& offset, Real yaw) {
 class TestContactCache : public QObject {
     Q_OBJECT
 private slots:
-    // A resting cube over several frames: each corner keeps the impulse the "solver" gave it.
+    // A resting cube over several frames: each corner keeps the impulse the "solver" gave it, and the manifold its
+    // friction and twist impulses.
     void impulsesFollowCorners() {
         ContactCache cache;
         for (int frame = 0; frame < 5; ++frame) {
@@ -37,15 +38,21 @@ private slots:
             for (int i = 0; i < m.pointCount; ++i) {
                 // The impulse encodes the corner (in the cube's frame), so a mix-up cannot go unnoticed.
                 const Real expected = 10.0 + 3.0 * (m.points[i].localB.x > 0) + 5.0 * (m.points[i].localB.z > 0);
-                if (frame > 0) {
+                if (frame > 0)
                     QCOMPARE(m.points[i].normalImpulse, expected);
-                    QCOMPARE(m.points[i].tangentImpulse[0], -expected);
-                } else {
+                else
                     QCOMPARE(m.points[i].normalImpulse, 0.0);
-                }
                 m.points[i].normalImpulse = expected;
-                m.points[i].tangentImpulse[0] = -expected;
             }
+            if (frame > 0) {
+                QCOMPARE(m.frictionImpulse, Vec3(-1.0 * frame, 0.0, 0.5));
+                QCOMPARE(m.twistImpulse, 0.25 * frame);
+            } else {
+                QCOMPARE(m.frictionImpulse, Vec3(0.0));
+                QCOMPARE(m.twistImpulse, 0.0);
+            }
+            m.frictionImpulse = Vec3(-1.0 * (frame + 1), 0.0, 0.5);
+            m.twistImpulse = 0.25 * (frame + 1);
             cache.endFrame();
             QCOMPARE(cache.size(), size_t(1));
         }
@@ -78,15 +85,22 @@ private slots:
         old.points[1].featureId = 2;
         old.points[1].localA = Vec3(0.0, 0.0, 1.0);
         old.points[1].normalImpulse = 4.0;
+        old.frictionImpulse = Vec3(0.5, 0.0, -0.25);
+        old.twistImpulse = 0.125;
         Manifold now;
         now.normal = normal;
         now.pointCount = 1;
         now.points[0].featureId = newId;
         now.points[0].localA = moveA;
         now.points[0].normalImpulse = 123.0; // must be overwritten either way
+        now.frictionImpulse = Vec3(7.0);
+        now.twistImpulse = 7.0;
         const int matched = warmStart(old, now);
         QCOMPARE(now.points[0].normalImpulse, expected);
         QCOMPARE(matched, expected > 0.0 ? 1 : 0);
+        // The manifold's friction goes with any matched point, and only then.
+        QCOMPARE(now.frictionImpulse, matched > 0 ? old.frictionImpulse : Vec3(0.0));
+        QCOMPARE(now.twistImpulse, matched > 0 ? old.twistImpulse : 0.0);
     }
 
     // A pair missing for a frame is dropped; when it comes back it starts cold.

@@ -903,8 +903,8 @@ T["rl::WorldSettingsWidget"] = {
     "All Auto": "Alle auf Auto",
     "All Effects Auto": "Alle Effekte auf Auto",
     "Restore Defaults": "Standardwerte",
-    "Earth gravity, 60 Hz, 8 substeps × 2 iterations, symplectic Euler, no damping, geometric-mean friction, maximum restitution, every effect on Auto":
-        "Erdschwerkraft, 60 Hz, 8 Teilschritte × 2 Iterationen, symplektischer Euler, keine Dämpfung, "
+    "Earth gravity, %1 Hz, %2 substeps × %3 iterations, symplectic Euler, no damping, geometric-mean friction, maximum restitution, every effect on Auto":
+        "Erdschwerkraft, %1 Hz, %2 Teilschritte × %3 Iterationen, symplektischer Euler, keine Dämpfung, "
         "Reibung als geometrisches Mittel, maximale Restitution, alle Effekte auf Auto",
     "Restore World Defaults": "Standardwerte der Welt wiederherstellen",
     "The frame rate must be above 0 and at most %L1 Hz (got %2 Hz).":

@@ -2775,10 +2775,6 @@ Restitution %5 = %6</translation>
         <translation>Standardwerte</translation>
     </message>
     <message>
-        <source>Earth gravity, 60 Hz, 8 substeps × 2 iterations, symplectic Euler, no damping, geometric-mean friction, maximum restitution, every effect on Auto</source>
-        <translation>Erdschwerkraft, 60 Hz, 8 Teilschritte × 2 Iterationen, symplektischer Euler, keine Dämpfung, Reibung als geometrisches Mittel, maximale Restitution, alle Effekte auf Auto</translation>
-    </message>
-    <message>
         <source>Restore World Defaults</source>
         <translation>Standardwerte der Welt wiederherstellen</translation>
     </message>
@@ -2841,6 +2837,10 @@ Restitution %5 = %6</translation>
     <message>
         <source>Auto would turn it %1: %2</source>
         <translation>Auto würde es auf „%1“ stellen: %2</translation>
+    </message>
+    <message>
+        <source>Earth gravity, %1 Hz, %2 substeps × %3 iterations, symplectic Euler, no damping, geometric-mean friction, maximum restitution, every effect on Auto</source>
+        <translation>Erdschwerkraft, %1 Hz, %2 Teilschritte × %3 Iterationen, symplektischer Euler, keine Dämpfung, Reibung als geometrisches Mittel, maximale Restitution, alle Effekte auf Auto</translation>
     </message>
 </context>
 </TS>

@@ -55,7 +55,7 @@ struct WorldTuning {
     // An island whose heaviest and lightest moving bodies differ by more than this mass ratio is solved with
     // refineSubsteps * sqrt(ratio / refineMassRatio) substeps in all, as a whole multiple of the scene's substeps
     // and at most maxSubstepRefinement times them (see World::substepRefinement). Random boxes of half sizes
-    // 0.15-0.4 m span a ratio of 19; 1:1000 gets 16 substeps (2x the default 8, 4x a scene's 4).
+    // 0.15-0.4 m span a ratio of 19; 1:1000 needs 16 substeps, which is 18 (3x the default 6) or 16 (4x a scene's 4).
     Real refineMassRatio = 250.0;
     Real refineSubsteps = 8.0;
     int maxSubstepRefinement = 4;

@@ -107,7 +107,7 @@ private slots:
         QTest::newRow("mass_ratio.rlscene") << "mass_ratio.rlscene" << 0.25;
         QTest::newRow("mass_pair_boxes.rlscene") << "mass_pair_boxes.rlscene" << 0.5;
         QTest::newRow("mass_ladder.rlscene") << "mass_ladder.rlscene" << 0.25;
-        // The world block of DESIGN.md section 6's example: substeps 4 (the defaults are 8 substeps x 2 iterations).
+        // The world block of DESIGN.md section 6's example: substeps 4 (the defaults are 6 substeps x 2 iterations).
         QTest::newRow("mass_pair_design_world.rlscene (substeps 4)") << "mass_pair_design_world.rlscene" << 0.25;
     }
     void massRatio() {

@@ -348,8 +348,12 @@ WorldSettingsWidget::WorldSettingsWidget(SceneDocument* document, QWidget* paren
     bottom->addStretch(1);
     auto* defaults = new QPushButton(tr("Restore Defaults"), content);
     defaults->setObjectName("WorldRestoreDefaults");
-    defaults->setToolTip(tr("Earth gravity, 60 Hz, 8 substeps × 2 iterations, symplectic Euler, no damping, "
-                            "geometric-mean friction, maximum restitution, every effect on Auto"));
+    const WorldSettings standard;
+    defaults->setToolTip(tr("Earth gravity, %1 Hz, %2 substeps × %3 iterations, symplectic Euler, no damping, "
+                            "geometric-mean friction, maximum restitution, every effect on Auto")
+                             .arg(standard.fps)
+                             .arg(standard.substeps)
+                             .arg(standard.iterations));
     connect(defaults, &QPushButton::clicked, this,
             [this] { applySettings(WorldSettings{}, tr("Restore World Defaults")); });
     bottom->addWidget(defaults);

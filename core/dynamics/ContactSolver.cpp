@@ -307,10 +307,30 @@ void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bo
         m_solveOrder[fill[levelOf[i]]++] = static_cast<uint32_t>(i);
 }
 
+int ContactSolver::s_widestLanes = 8;
+
 void ContactSolver::buildBatches() {
-    m_batches.clear();
-    m_batchPoints.clear();
     m_batchesAhead = false;
+    // Eight lanes of doubles need AVX-512 (x86-64-v4); elsewhere 512-bit vectors split into halves ran 2.2x slower
+    // than four lanes in one AVX2 register (a microbenchmark of the row update, 2026-11-26).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+    static const bool wide = __builtin_cpu_supports("x86-64-v4");
+#else
+    static const bool wide = false;
+#endif
+    m_width = wide && s_widestLanes >= 8 ? 8 : 4;
+    if (m_width == 8)
+        buildBatches(m_store8);
+    else
+        buildBatches(m_store4);
+}
+
+template <int W>
+void ContactSolver::buildBatches(BatchStore<W>& store) {
+    std::vector<Batch<W>>& batches = store.batches;
+    std::vector<BatchPoint<W>>& points = store.points;
+    batches.clear();
+    points.clear();
     const size_t levels = levelCount();
     m_batchLevelStart.assign(levels + 1, 0);
     auto set = [](auto* lanes, const Vec3& v, int lane) {
@@ -319,8 +339,8 @@ void ContactSolver::buildBatches() {
     };
     // Within a level the order is free (its constraints share no moving body), so constraints are grouped there by
     // their point count, and pushing ones apart from those that did not push in the last step: the lanes of a batch
-    // then have work of the same size, and a point slot in which no lane pushes skips its friction rows and warm
-    // start, as the scalar sweep skips such points.
+    // then have work of the same size, and a point slot in which no lane pushes skips its warm start, as the scalar
+    // sweep skips such points.
     // The keys are worked out once per constraint, not in every comparison of the sort.
     thread_local std::vector<uint8_t> key;
     key.resize(m_constraints.size());
@@ -335,15 +355,15 @@ void ContactSolver::buildBatches() {
         std::stable_sort(m_solveOrder.begin() + levelBegin(level), m_solveOrder.begin() + levelEnd(level),
                          [&](uint32_t l, uint32_t r) { return key[l] < key[r]; });
     for (size_t level = 0; level < levels; ++level) {
-        m_batchLevelStart[level] = static_cast<uint32_t>(m_batches.size());
-        for (size_t first = levelBegin(level); first < levelEnd(level); first += 4) {
-            const size_t lanes = std::min<size_t>(4, levelEnd(level) - first);
-            Batch& batch = m_batches.emplace_back();
-            batch.firstPoint = static_cast<uint32_t>(m_batchPoints.size());
+        m_batchLevelStart[level] = static_cast<uint32_t>(batches.size());
+        for (size_t first = levelBegin(level); first < levelEnd(level); first += W) {
+            const size_t lanes = std::min<size_t>(W, levelEnd(level) - first);
+            Batch<W>& batch = batches.emplace_back();
+            batch.firstPoint = static_cast<uint32_t>(points.size());
             for (size_t l = 0; l < lanes; ++l)
                 batch.pointCount = std::max<uint32_t>(
                     batch.pointCount, static_cast<uint32_t>(m_constraints[m_solveOrder[first + l]].pointCount));
-            m_batchPoints.resize(m_batchPoints.size() + batch.pointCount);
+            points.resize(points.size() + batch.pointCount);
             for (size_t l = 0; l < lanes; ++l) {
                 const int lane = static_cast<int>(l);
                 const uint32_t index = m_solveOrder[first + l];
@@ -368,7 +388,7 @@ void ContactSolver::buildBatches() {
                 batch.twistImpulse.v[l] = c.twistImpulse;
                 for (int k = 0; k < c.pointCount; ++k) {
                     const ContactConstraint::Point& p = c.points[c.order[k]];
-                    BatchPoint& q = m_batchPoints[batch.firstPoint + static_cast<uint32_t>(k)];
+                    BatchPoint<W>& q = points[batch.firstPoint + static_cast<uint32_t>(k)];
                     set(q.rA, p.rA, lane);
                     set(q.rB, p.rB, lane);
                     q.baseSeparation.v[l] = static_cast<float>(p.baseSeparation);
@@ -380,15 +400,23 @@ void ContactSolver::buildBatches() {
             }
         }
     }
-    m_batchLevelStart[levels] = static_cast<uint32_t>(m_batches.size());
+    m_batchLevelStart[levels] = static_cast<uint32_t>(batches.size());
 }
 
 void ContactSolver::syncFromBatches() const {
     if (!m_batchesAhead)
         return;
     m_batchesAhead = false;
-    for (const Batch& batch : m_batches)
-        for (int l = 0; l < 4; ++l) {
+    if (m_width == 8)
+        syncFromBatches(m_store8);
+    else
+        syncFromBatches(m_store4);
+}
+
+template <int W>
+void ContactSolver::syncFromBatches(const BatchStore<W>& store) const {
+    for (const Batch<W>& batch : store.batches)
+        for (int l = 0; l < W; ++l) {
             if (batch.constraint[l] == kNoConstraint)
                 continue;
             ContactConstraint& c = m_constraints[batch.constraint[l]];
@@ -396,7 +424,7 @@ void ContactSolver::syncFromBatches() const {
             c.frictionImpulse[1] = batch.frictionImpulse[1].v[l];
             c.twistImpulse = batch.twistImpulse.v[l];
             for (int k = 0; k < c.pointCount; ++k) {
-                const BatchPoint& q = m_batchPoints[batch.firstPoint + static_cast<uint32_t>(k)];
+                const BatchPoint<W>& q = store.points[batch.firstPoint + static_cast<uint32_t>(k)];
                 ContactConstraint::Point& p = c.points[c.order[k]];
                 p.normalImpulse = q.impulse.v[l];
                 p.maxNormalImpulse = q.maxNormalImpulse.v[l];
@@ -407,7 +435,7 @@ void ContactSolver::syncFromBatches() const {
 void ContactSolver::warmStart(std::span<SolverBody> bodies) {
     beginSubstep();
     if (m_settings.warmStarting)
-        warmStartBatchRange(bodies, 0, m_batches.size());
+        warmStartBatchRange(bodies, 0, batchCount());
 }
 
 void ContactSolver::warmStartSequential(std::span<SolverBody> bodies) {
@@ -555,7 +583,7 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
 } // namespace
 
 void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
-    solveBatchRange(bodies, useBias, 0, m_batches.size());
+    solveBatchRange(bodies, useBias, 0, batchCount());
     countSweep();
 }
 

@@ -23,6 +23,9 @@ struct SolverBody {
     Mat3 dR{1.0};         // rotation change since the step began (a matrix: 9 multiplies per anchor)
     Real invMass = 0.0;   // 0 for anchors and kinematic proxies
     Mat3 invInertia{0.0}; // world axes, taken at the start of the step
+    // 32 doubles in all, so that the batches' gathers read each record as four whole blocks of eight doubles
+    // (ContactSolverWide.cpp) without reading past the last one.
+    Real unused[4] = {0.0, 0.0, 0.0, 0.0};
 };
 
 // Coefficients of a soft constraint for one substep length (see softness()).
@@ -136,12 +139,12 @@ public:
     // useBias = true: the soft solve that pushes overlap apart; false: the relax pass that removes the bias velocity.
     void solve(std::span<SolverBody> bodies, bool useBias);
 
-    // warmStart() and solve() sweep the constraints level by level (see scheduleLevels()), four at a time: the
-    // constraints of one level share no moving body, so they are packed into batches of four lanes
-    // (ContactSolverWide.cpp) whose lanes run side by side in vector registers. Every body still receives the same
-    // updates in the same order as in the sequential sweep in manifold order, segment by segment
-    // (warmStartSequential(), solveSequential()), so the results are the same numbers, whatever the order of the
-    // batches within a level.
+    // warmStart() and solve() sweep the constraints level by level (see scheduleLevels()), in batches: the
+    // constraints of one level share no moving body, so they are packed into batches of laneWidth() lanes
+    // (ContactSolverWide.cpp) whose lanes run side by side in vector registers, eight doubles in an AVX-512 register
+    // where the CPU has it (x86-64-v4), else four. Every body still receives the same updates in the same order as in
+    // the sequential sweep in manifold order, segment by segment (warmStartSequential(), solveSequential()), so the
+    // results are the same numbers, whatever the width and the order of the batches within a level.
     //
     // The same, split up for several threads: batches begin..end within one level may run on different threads at
     // once. A substep is beginSubstep() once, then warmStartBatchRange() over every level, then sweeps of
@@ -181,13 +184,20 @@ public:
     // Writes the accumulated impulses back to the manifolds for warm starting in the next step.
     void storeImpulses(std::span<Manifold> manifolds) const;
 
-    // One value per lane of a batch (the batch storage below; ContactSolverWide.cpp loads them into vectors).
-    struct alignas(32) Lanes {
-        Real v[4];
+    // One value per lane of a batch of W lanes (the batch storage below; ContactSolverWide.cpp loads them into
+    // vectors).
+    template <int W>
+    struct alignas(W * sizeof(Real)) Lanes {
+        Real v[W];
     };
-    struct alignas(16) FloatLanes {
-        float v[4];
+    template <int W>
+    struct alignas(W * sizeof(float)) FloatLanes {
+        float v[W];
     };
+    // The lanes of the batches: 8 where the CPU runs x86-64-v4 (AVX-512), else 4 (see prepare()).
+    int laneWidth() const { return m_width; }
+    // Batches of four lanes only, whatever the CPU (tests compare the two widths).
+    static void setWidestLanes(int lanes) { s_widestLanes = lanes; }
 
     const std::vector<ContactConstraint>& constraints() const {
         syncFromBatches();
@@ -197,21 +207,26 @@ public:
     void resetCounters() { m_counters = {}; }
 
 private:
-    // A batch: four constraints of one level in lanes (an empty lane has bodies 0 and zero masses), with its points
-    // in m_batchPoints. Lane l's point k is its constraint's k-th point in solve order (ContactConstraint::order);
+    // A batch: W constraints of one level in lanes (an empty lane has bodies 0 and zero masses), with its points
+    // in the store's points. Lane l's point k is its constraint's k-th point in solve order (ContactConstraint::order);
     // lanes with fewer points carry zero points, which apply no impulse.
+    template <int W>
     struct Batch {
-        uint32_t bodyA[4] = {0, 0, 0, 0}, bodyB[4] = {0, 0, 0, 0};
-        uint32_t constraint[4] = {kNoConstraint, kNoConstraint, kNoConstraint, kNoConstraint};
+        Batch() {
+            for (int l = 0; l < W; ++l)
+                constraint[l] = kNoConstraint;
+        }
+        uint32_t bodyA[W] = {}, bodyB[W] = {};
+        uint32_t constraint[W];
         uint32_t firstPoint = 0, pointCount = 0;
-        Lanes normal[3], tangent[2][3];
-        Lanes friction;
-        Lanes centerA[3], centerB[3]; // the friction centres
-        FloatLanes frictionMass[3];   // the constraints' frictionMass
-        FloatLanes twistMass;         // likewise
-        Lanes frictionImpulse[2], twistImpulse;
-        Lanes scaleA, scaleB; // the constraints' scaleA, scaleB
-        bool holds = false;   // a lane holds a side still: the sweeps scale that side's inverse mass and inertia
+        Lanes<W> normal[3], tangent[2][3];
+        Lanes<W> friction;
+        Lanes<W> centerA[3], centerB[3]; // the friction centres
+        FloatLanes<W> frictionMass[3];   // the constraints' frictionMass
+        FloatLanes<W> twistMass;         // likewise
+        Lanes<W> frictionImpulse[2], twistImpulse;
+        Lanes<W> scaleA, scaleB; // the constraints' scaleA, scaleB
+        bool holds = false;      // a lane holds a side still: the sweeps scale that side's inverse mass and inertia
     };
     // Only what a point cannot recompute is stored: the sweeps stream every point of the group through the cache
     // (54k in large_pyramid) and were bound by memory when the points carried their rows' r x d and I^-1 (r x d)
@@ -219,16 +234,36 @@ private:
     // numbers the scalar sweeps compute (ContactSolver.cpp). The separation and masses are floats (prepare() rounds
     // them for both kinds of sweep); anchors and impulses stay double. (Float anchors gave no speed-up beyond this
     // machine's noise.)
+    template <int W>
     struct BatchPoint {
-        Lanes rA[3], rB[3];
-        FloatLanes baseSeparation;
-        FloatLanes mass;     // normal
-        FloatLanes leverArm; // distance from the friction centre
-        Lanes impulse;       // accumulated normal impulse
-        Lanes maxNormalImpulse;
+        Lanes<W> rA[3], rB[3];
+        FloatLanes<W> baseSeparation;
+        FloatLanes<W> mass;     // normal
+        FloatLanes<W> leverArm; // distance from the friction centre
+        Lanes<W> impulse;       // accumulated normal impulse
+        Lanes<W> maxNormalImpulse;
+    };
+    template <int W>
+    struct BatchStore {
+        std::vector<Batch<W>> batches;
+        std::vector<BatchPoint<W>> points;
     };
     static constexpr uint32_t kNoConstraint = 0xffffffffu;
 
+    template <int W>
+    void buildBatches(BatchStore<W>& store);
+    template <int W>
+    void syncFromBatches(const BatchStore<W>& store) const;
+    // The sweeps over batches begin..end of W lanes (ContactSolverWide.cpp).
+    void warmStartBatches4(std::span<SolverBody> bodies, size_t begin, size_t end);
+    void warmStartBatches8(std::span<SolverBody> bodies, size_t begin, size_t end);
+    void solveBatches4(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
+    void solveBatches8(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
+    template <int W>
+    void warmStartBatches(BatchStore<W>& store, std::span<SolverBody> bodies, size_t begin, size_t end);
+    template <int W>
+    void solveBatches(BatchStore<W>& store, std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
+    size_t batchCount() const { return m_width == 8 ? m_store8.batches.size() : m_store4.batches.size(); }
     void buildBatches();
     // Copies the batches' impulses and impact records back to m_constraints, if a batched sweep ran since.
     void syncFromBatches() const;
@@ -241,9 +276,11 @@ private:
     std::vector<uint8_t> m_segment;     // per constraint: its part, or kBoundarySegment
     size_t m_segmentLevelStart[kParts + 2] = {};
     std::vector<uint32_t> m_levelStart;      // level k: m_solveOrder[m_levelStart[k], m_levelStart[k + 1])
-    std::vector<uint32_t> m_batchLevelStart; // level k: m_batches[m_batchLevelStart[k], m_batchLevelStart[k + 1])
-    std::vector<Batch> m_batches;
-    std::vector<BatchPoint> m_batchPoints;
+    std::vector<uint32_t> m_batchLevelStart; // level k: batches [m_batchLevelStart[k], m_batchLevelStart[k + 1])
+    BatchStore<4> m_store4;                  // the batches when m_width is 4
+    BatchStore<8> m_store8;                  // when it is 8
+    int m_width = 4;
+    static int s_widestLanes;            // 8, or 4 to keep to four lanes
     mutable bool m_batchesAhead = false; // the batches hold newer impulses than m_constraints
     ContactSolverSettings m_settings;
     Real m_inverseH = 0.0;

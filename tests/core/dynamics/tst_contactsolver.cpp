@@ -181,18 +181,27 @@ private slots:
     // The batched sweeps (four constraints of a level side by side) give the numbers of the scalar sweep in manifold
     // order: velocities, impulses and impact records, through warm starts, soft and relax sweeps, with bodies that
     // have moved and turned since the step began.
+    // Rows run with batches of four lanes and with the widest the CPU offers (eight where it has AVX-512, else four
+    // again; the row's output says which ran).
     void batchesGiveTheSequentialNumbers_data() {
         QTest::addColumn<int>("bodies");
         QTest::addColumn<int>("constraints");
         QTest::addColumn<bool>("chain");
         QTest::addColumn<bool>("parts");
         QTest::addColumn<bool>("holds");
-        QTest::newRow("tower of 40") << 40 << 40 << true << false << false;
-        QTest::newRow("203 random contacts among 60 bodies") << 60 << 203 << false << false << false;
-        QTest::newRow("3001 random contacts among 1000 bodies") << 1000 << 3001 << false << false << false;
-        QTest::newRow("3001 random contacts among 1000 bodies in two parts") << 1000 << 3001 << false << true << false;
-        QTest::newRow("tower of 40, holding sides") << 40 << 40 << true << false << true;
-        QTest::newRow("203 random contacts among 60 bodies, holding sides") << 60 << 203 << false << false << true;
+        QTest::addColumn<int>("lanes");
+        for (int lanes : {4, 8}) {
+            QTest::addRow("tower of 40, %d lanes", lanes) << 40 << 40 << true << false << false << lanes;
+            QTest::addRow("203 random contacts among 60 bodies, %d lanes", lanes)
+                << 60 << 203 << false << false << false << lanes;
+            QTest::addRow("3001 random contacts among 1000 bodies, %d lanes", lanes)
+                << 1000 << 3001 << false << false << false << lanes;
+            QTest::addRow("3001 random contacts among 1000 bodies in two parts, %d lanes", lanes)
+                << 1000 << 3001 << false << true << false << lanes;
+            QTest::addRow("tower of 40, holding sides, %d lanes", lanes) << 40 << 40 << true << false << true << lanes;
+            QTest::addRow("203 random contacts among 60 bodies, holding sides, %d lanes", lanes)
+                << 60 << 203 << false << false << true << lanes;
+        }
     }
     void batchesGiveTheSequentialNumbers() {
         QFETCH(int, bodies);
@@ -200,6 +209,8 @@ private slots:
         QFETCH(bool, chain);
         QFETCH(bool, parts);
         QFETCH(bool, holds);
+        QFETCH(int, lanes);
+        ContactSolver::setWidestLanes(lanes);
         Problem p = makeProblem(bodies, constraints, chain, 5);
         if (holds)
             holdSome(p);
@@ -248,8 +259,10 @@ private slots:
                 pushing += ca.points[k].normalImpulse > 0.0 ? 1 : 0;
             }
         }
-        qInfo("%d constraints, %d solved deepest point first, %d points pushing, %d with friction and twist",
-              constraints, impacts, pushing, rubbing);
+        qInfo("%d constraints, %d solved deepest point first, %d points pushing, %d with friction and twist; batches "
+              "of %d lanes",
+              constraints, impacts, pushing, rubbing, b.laneWidth());
+        ContactSolver::setWidestLanes(8);
         QVERIFY(pushing > 0);
         QVERIFY(rubbing > 0);
     }
@@ -309,13 +322,18 @@ private slots:
 
     void aTeamOfTwoSolvesBitIdentically_data() {
         QTest::addColumn<bool>("parts");
-        QTest::newRow("level by level") << false;
-        QTest::newRow("a part each, then the boundary") << true;
+        QTest::addColumn<int>("lanes");
+        for (int lanes : {4, 8}) {
+            QTest::addRow("level by level, %d lanes", lanes) << false << lanes;
+            QTest::addRow("a part each, then the boundary, %d lanes", lanes) << true << lanes;
+        }
     }
     // Two threads split every level between barriers, or (with parts) each sweeps a part with no barrier between
     // levels, then one sweeps the boundary. Either gives the bits of one thread sweeping the levels in order.
     void aTeamOfTwoSolvesBitIdentically() {
         QFETCH(bool, parts);
+        QFETCH(int, lanes);
+        ContactSolver::setWidestLanes(lanes);
         const Problem p = makeProblem(1000, 3000, false, 11);
         const std::vector<uint8_t> part = halves(1000);
         const std::span<const uint8_t> partSpan = parts ? std::span<const uint8_t>(part) : std::span<const uint8_t>();
@@ -363,6 +381,8 @@ private slots:
             QVERIFY(sameBits(one[i].w, two[i].w));
         }
         QVERIFY(one[0].v == Vec3(0.0) && two[0].w == Vec3(0.0)); // the static entry is never written
+        qInfo("batches of %d lanes", b.laneWidth());
+        ContactSolver::setWidestLanes(8);
     }
 };
 

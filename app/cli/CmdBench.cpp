@@ -155,8 +155,9 @@ bool runWorld(World& world, int frames, const QString& label, bool quiet, BenchR
     const Profile& p = world.profile();
     out.broadMs = groupMs(p, {Stage::UpdateBroadphase, Stage::FindPairs});
     out.narrowMs = groupMs(p, {Stage::Narrowphase});
-    out.solveMs = groupMs(p, {Stage::BuildIslands, Stage::IntegrateVelocities, Stage::WarmStart, Stage::Solve,
-                              Stage::IntegratePositions, Stage::Relax, Stage::Restitution});
+    out.solveMs =
+        groupMs(p, {Stage::BuildIslands, Stage::PrepareContacts, Stage::IntegrateVelocities, Stage::WarmStart,
+                    Stage::Solve, Stage::IntegratePositions, Stage::Relax, Stage::Restitution, Stage::StoreImpulses});
     out.otherMs = groupMs(p, {Stage::Ccd, Stage::Sleep, Stage::StoreFrame});
 
     uint64_t hash = 1469598103934665603ull;

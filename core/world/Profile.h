@@ -15,12 +15,14 @@ enum class Stage {
     FindPairs,
     Narrowphase,
     BuildIslands,
+    PrepareContacts, // the solver's constraints from the manifolds: masses, friction centres, batches
     IntegrateVelocities,
     WarmStart,
     Solve,
     IntegratePositions,
     Relax,
     Restitution,
+    StoreImpulses, // velocities, positions and accumulated impulses back to the bodies and manifolds
     Ccd,
     Sleep,
     StoreFrame,

@@ -900,6 +900,11 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
     const Real h = dt / substeps;
     const bool rotation = m_effects.effects.has(Effect::Rotation);
     const std::vector<uint32_t>& group = scratch.bodies;
+    // Islands shared out (!mayUseTeam) run on the team's members, whose caller times the whole solve: the stage
+    // timers are not thread safe.
+    std::optional<StageTimer> prepareTimer;
+    if (mayUseTeam)
+        prepareTimer.emplace(m_profile, Stage::PrepareContacts);
 
     // Solver bodies: entry 0 stands for every immovable body (anchors and sleepers); the group's bodies follow.
     std::vector<SolverBody>& bodies = scratch.solverBodies;
@@ -973,6 +978,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
     // level of part 0 while member 1 sweeps part 1, with one barrier, then the constraints across the cut follow.
     // The 5,050-cube pyramid has 591 levels, 376 of them with fewer than 32 constraints, which left one member
     // waiting at most barriers.
+    prepareTimer.reset();
     constexpr size_t kBoundary = ContactSolver::kBoundarySegment;
     const auto levelWidthOf = [&](size_t firstLevel, size_t lastLevel) -> size_t {
         return lastLevel > firstLevel
@@ -1108,6 +1114,9 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
         solver.applyRestitution(bodies);
         fromSolver(0, group.size());
     }
+    std::optional<StageTimer> storeTimer;
+    if (mayUseTeam)
+        storeTimer.emplace(m_profile, Stage::StoreImpulses);
     local.scatterMotion(m_state, group);
     solver.storeImpulses(scratch.manifolds);
     for (size_t k = 0; k < scratch.activeContacts.size(); ++k)

@@ -182,7 +182,8 @@ private slots:
             counters += line.startsWith("counter=") && line.contains(" value=") ? 1 : 0;
             effects += line.startsWith("effects=") ? 1 : 0;
         }
-        QCOMPARE(stages, 13);
+        QCOMPARE(stages, 15); // rl::kStageCount
+        QVERIFY(r.out.contains("stage=prepare_contacts ms=") && r.out.contains("stage=store_impulses ms="));
         QCOMPARE(effects, 1);
         QVERIFY(counters >= 10);
         QVERIFY(r.out.contains("effects=gravity,rotation,friction,restitution,sleeping"));

@@ -160,21 +160,27 @@ public:
 private:
     World() = default;
 
+    // A pair's contact, some 700 bytes. The fields a new pair sets (startContact()) come first, so that starting one
+    // in a reused slot writes two cache lines of it, not the whole.
     struct Contact {
         uint32_t bodyA = 0, bodyB = 0;
-        Manifold manifold;
         Real friction = 0.0;
         Real restitution = 0.0;
-        // The pose of B in A's frame (centres of mass) when the manifold was last computed, and the speculative
-        // margin it was computed with: while B has hardly moved relative to A the manifold is refreshed from its
-        // local witness points instead of recomputed (see collidePair()).
+        // The speculative margin the manifold was computed with (< 0: nothing cached), and while the pair is apart the
+        // axis (A's shape coordinates) that separated it last, or zero.
+        Real cachedMargin = -1.0;
+        Vec3 separatingAxis{0.0};
+        Manifold manifold;
+        // The pose of B in A's frame (centres of mass) when the manifold was last computed: while B has hardly moved
+        // relative to A the manifold is refreshed from its local witness points instead of recomputed (see
+        // collidePair()).
         Vec3 cachedOffset{0.0};
         Mat3 cachedRotation{1.0};
-        Vec3 cachedNormal{0.0};   // the manifold's normal in A's shape coordinates
-        Real cachedMargin = -1.0; // < 0: nothing cached
-        // While the pair is apart: the axis (A's shape coordinates) that separated it last, or zero.
-        Vec3 separatingAxis{0.0};
+        Vec3 cachedNormal{0.0}; // the manifold's normal in A's shape coordinates
     };
+    // Makes `c` the contact of a new pair a-b, with no points and nothing cached. Its other fields are written
+    // before they are read.
+    void startContact(Contact& c, uint32_t a, uint32_t b) const;
 
     void updateBroadphase();
     void findPairs();

@@ -195,7 +195,8 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
     // point already touching struck at or before the step start, at v. (Until 2026-11-26 the speed was taken at
     // the end of the substep where the point first pushed, up to a substep's a h too fast, so the third apex of an
     // e = 0.5 drop depended on where in the step the ball landed: -2.1 % at 8 substeps, +3.3 % at 6.)
-    for (int k = 0; k < m.pointCount; ++k) {
+    // (Only the restitution pass reads these speeds: a pair that cannot bounce skips the square roots.)
+    for (int k = 0; k < (restitution > 0.0 && settings.restitution ? m.pointCount : 0); ++k) {
         ContactConstraint::Point& p = c.points[k];
         const Real accel = c.approachAcceleration, s = m.points[k].separation;
         const Real v = p.relativeVelocity + settings.flightOffset * accel * h;

@@ -219,7 +219,7 @@ Softness softness(Real omega, Real zeta, Real h) {
     return {omega / a1, a2 * a3, a3};
 }
 
-void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const uint32_t> solverIndexA,
+void ContactSolver::prepare(std::span<Manifold* const> manifolds, std::span<const uint32_t> solverIndexA,
                             std::span<const uint32_t> solverIndexB, std::span<const Real> friction,
                             std::span<const Real> restitution, std::span<const SolverBody> bodies,
                             std::span<const Vec3> centers, Real h, const ContactSolverSettings& settings,
@@ -233,7 +233,7 @@ void ContactSolver::prepare(std::span<const Manifold> manifolds, std::span<const
     m_constraints.resize(manifolds.size());
     const auto setUp = [&](size_t begin, size_t end) {
         for (size_t i = begin; i < end; ++i)
-            setUpConstraint(m_constraints[i], manifolds[i], solverIndexA[i], solverIndexB[i], friction[i],
+            setUpConstraint(m_constraints[i], *manifolds[i], solverIndexA[i], solverIndexB[i], friction[i],
                             restitution[i], heldSide.empty() ? uint8_t(0) : heldSide[i], bodies, centers, h, settings);
     };
     if (parallelFor)
@@ -663,15 +663,15 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
     }
 }
 
-void ContactSolver::storeImpulses(std::span<Manifold> manifolds) const {
+void ContactSolver::storeImpulses(std::span<Manifold* const> manifolds) const {
     syncFromBatches();
     for (size_t i = 0; i < manifolds.size() && i < m_constraints.size(); ++i) {
         const ContactConstraint& c = m_constraints[i];
-        for (int k = 0; k < c.pointCount; ++k) {
-            manifolds[i].points[k].normalImpulse = c.points[k].normalImpulse;
-        }
-        manifolds[i].frictionImpulse = c.frictionImpulse[0] * c.tangent[0] + c.frictionImpulse[1] * c.tangent[1];
-        manifolds[i].twistImpulse = c.twistImpulse;
+        Manifold& m = *manifolds[i];
+        for (int k = 0; k < c.pointCount; ++k)
+            m.points[k].normalImpulse = c.points[k].normalImpulse;
+        m.frictionImpulse = c.frictionImpulse[0] * c.tangent[0] + c.frictionImpulse[1] * c.tangent[1];
+        m.twistImpulse = c.twistImpulse;
     }
 }
 

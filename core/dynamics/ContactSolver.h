@@ -110,7 +110,8 @@ public:
     // Calls body(begin, end) for ranges that together cover [0, count) once each, on one thread or several.
     using ParallelFor = std::function<void(size_t count, const std::function<void(size_t begin, size_t end)>& body)>;
 
-    // Builds constraints from manifolds. solverIndexA/B map each manifold to SolverBody entries; friction and
+    // Builds constraints from manifolds (pointers to them: the world's contacts are not copied, some 450 bytes each;
+    // storeImpulses() writes to the same ones). solverIndexA/B map each manifold to SolverBody entries; friction and
     // restitution are the combined values per manifold; centers are the bodies' centres of mass at the step start
     // (indexed like bodies). h is the substep length.
     //
@@ -124,7 +125,7 @@ public:
     // heldSide, if given, holds one side of a manifold still for its constraint: kHoldA or kHoldB (else 0). The held
     // body's velocity is read but the constraint's impulses do not move it, as if it were infinitely heavy, so the
     // other body is stopped by it in one sweep (shock propagation: World holds the lower of two bodies).
-    void prepare(std::span<const Manifold> manifolds, std::span<const uint32_t> solverIndexA,
+    void prepare(std::span<Manifold* const> manifolds, std::span<const uint32_t> solverIndexA,
                  std::span<const uint32_t> solverIndexB, std::span<const Real> friction,
                  std::span<const Real> restitution, std::span<const SolverBody> bodies, std::span<const Vec3> centers,
                  Real h, const ContactSolverSettings& settings, std::span<const uint8_t> bodyPart = {},
@@ -181,8 +182,9 @@ public:
     // is -e v_impact - flightOffset a_n h. Without the offsets each bounce lost (1 + e) g h / 2 of speed, and the
     // third apex of an e = 0.5 drop from 5 m came out 5.0 % low (issue 4 asks for 3 %).
     void applyRestitution(std::span<SolverBody> bodies);
-    // Writes the accumulated impulses back to the manifolds for warm starting in the next step.
-    void storeImpulses(std::span<Manifold> manifolds) const;
+    // Writes the accumulated impulses back to the manifolds (those given to prepare()) for warm starting in the next
+    // step.
+    void storeImpulses(std::span<Manifold* const> manifolds) const;
 
     // One value per lane of a batch of W lanes (the batch storage below; ContactSolverWide.cpp loads them into
     // vectors).

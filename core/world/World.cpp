@@ -932,8 +932,8 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
         scratch.centers[k + 1] = m_state.position[i];
     }
     for (uint32_t slot : scratch.activeContacts) {
-        const Contact& contact = m_contactPool[slot];
-        scratch.manifolds.push_back(contact.manifold);
+        Contact& contact = m_contactPool[slot];
+        scratch.manifolds.push_back(&contact.manifold);
         // Sleepers and anchors have solver index 0; so does a moving body of another group, which cannot touch.
         scratch.indexA.push_back(m_solverIndex[contact.bodyA]);
         scratch.indexB.push_back(m_solverIndex[contact.bodyB]);
@@ -1131,8 +1131,6 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
         storeTimer.emplace(m_profile, Stage::StoreImpulses);
     local.scatterMotion(m_state, group);
     solver.storeImpulses(scratch.manifolds);
-    for (size_t k = 0; k < scratch.activeContacts.size(); ++k)
-        m_contactPool[scratch.activeContacts[k]].manifold = scratch.manifolds[k];
     for (uint32_t i : group)
         m_solverIndex[i] = 0;
 }

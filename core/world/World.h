@@ -195,7 +195,7 @@ private:
         std::vector<SolverBody> solverBodies;
         std::vector<Vec3> centers;
         std::vector<uint32_t> activeContacts, indexA, indexB; // pool slots of the group's contacts; solver indices
-        std::vector<Manifold> manifolds;
+        std::vector<Manifold*> manifolds;                     // the group's contacts' manifolds, in m_contactPool
         std::vector<Real> friction, restitution;
         std::vector<uint8_t> held;         // per contact: ContactSolver::kHoldA / kHoldB for shock propagation, else 0
         std::vector<ClampCounters> clamps; // per member of the team

@@ -81,8 +81,12 @@ Problem makeProblem(int bodyCount, int count, bool chain, unsigned seed) {
 void prepare(ContactSolver& solver, const Problem& p, std::span<const uint8_t> parts = {}) {
     ContactSolverSettings settings;
     settings.contactHertz = 120.0;
-    solver.prepare(p.manifolds, p.indexA, p.indexB, p.friction, p.restitution, p.bodies, p.centers, 1.0 / 480.0,
-                   settings, parts, {}, p.held);
+    // prepare() reads the manifolds and keeps nothing of them (only storeImpulses(), not called here, writes).
+    std::vector<Manifold*> manifolds;
+    for (const Manifold& m : p.manifolds)
+        manifolds.push_back(const_cast<Manifold*>(&m));
+    solver.prepare(manifolds, p.indexA, p.indexB, p.friction, p.restitution, p.bodies, p.centers, 1.0 / 480.0, settings,
+                   parts, {}, p.held);
 }
 
 // Part 0 or 1 for each body: bodies 1..n/2 in part 0, the rest in part 1 (a cut through the middle of the ids).

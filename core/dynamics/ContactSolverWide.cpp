@@ -393,6 +393,18 @@ RL_LANES_INLINE void scaleSide(Side<V>& s, const V& scale) {
             s.invInertia.m[c][r] = s.invInertia.m[c][r] * scale;
 }
 
+// Both sides of a batch, gathered, with a held side's inverse mass and inertia scaled (see scaleSide()).
+template <int W, bool kMotion, class BatchT>
+RL_LANES_INLINE void gatherSides(const BatchT& batch, std::span<const SolverBody> bodies, Side<typename Vec<W>::V>& a,
+                                 Side<typename Vec<W>::V>& b) {
+    gather<W, kMotion>(a, bodies, batch.bodyA);
+    gather<W, kMotion>(b, bodies, batch.bodyB);
+    if (batch.holds) {
+        scaleSide(a, get<W>(batch.scaleA));
+        scaleSide(b, get<W>(batch.scaleB));
+    }
+}
+
 // One row of one point along direction d: r x d for each body, and that times the body's inverse inertia, computed
 // as the scalar sweeps compute them (angularOf(), inertiaOf() in ContactSolver.cpp).
 template <class V>
@@ -453,12 +465,7 @@ RL_LANES_INLINE void ContactSolver::warmStartBatches(BatchStore<W>& store, std::
     for (size_t n = begin; n < end; ++n) {
         const Batch<W>& batch = store.batches[n];
         Side<V> a, b;
-        gather<W, false>(a, bodies, batch.bodyA);
-        gather<W, false>(b, bodies, batch.bodyB);
-        if (batch.holds) {
-            scaleSide(a, get<W>(batch.scaleA));
-            scaleSide(b, get<W>(batch.scaleB));
-        }
+        gatherSides<W, false>(batch, bodies, a, b);
         const L3<V> normal = load<W>(batch.normal);
         const L3<V> tangent[2] = {load<W>(batch.tangent[0]), load<W>(batch.tangent[1])};
         for (uint32_t k = 0; k < batch.pointCount; ++k) {
@@ -489,12 +496,7 @@ RL_LANES_INLINE void ContactSolver::solveBatches(BatchStore<W>& store, std::span
     for (size_t n = begin; n < end; ++n) {
         Batch<W>& batch = store.batches[n];
         Side<V> a, b;
-        gather<W, true>(a, bodies, batch.bodyA);
-        gather<W, true>(b, bodies, batch.bodyB);
-        if (batch.holds) {
-            scaleSide(a, get<W>(batch.scaleA));
-            scaleSide(b, get<W>(batch.scaleB));
-        }
+        gatherSides<W, true>(batch, bodies, a, b);
         const L3<V> normal = load<W>(batch.normal);
         for (uint32_t k = 0; k < batch.pointCount; ++k) {
             BatchPoint<W>& p = store.points[batch.firstPoint + k];

@@ -196,9 +196,10 @@ public:
     struct alignas(W * sizeof(float)) FloatLanes {
         float v[W];
     };
-    // The lanes of the batches: 8 where the CPU runs x86-64-v4 (AVX-512), else 4 (see prepare()).
+    // The lanes of the batches: 8 where the CPU runs x86-64-v4 (AVX-512), else 4 (chosen by buildBatches()).
     int laneWidth() const { return m_width; }
-    // Batches of four lanes only, whatever the CPU (tests compare the two widths).
+    // 4 keeps every solver's batches to four lanes; 8 (the default) lets them have eight where the CPU has AVX-512.
+    // For tests, which compare the two widths; it applies to the next prepare().
     static void setWidestLanes(int lanes) { s_widestLanes = lanes; }
 
     const std::vector<ContactConstraint>& constraints() const {

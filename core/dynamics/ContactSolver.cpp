@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <type_traits>
 
 namespace rl {
@@ -241,7 +242,7 @@ void ContactSolver::prepare(std::span<Manifold* const> manifolds, std::span<cons
     else
         setUp(0, manifolds.size());
     scheduleLevels(bodies.size(), bodyPart);
-    buildBatches();
+    buildBatches(parallelFor);
     m_sweepRows = {};
     for (const ContactConstraint& c : m_constraints) {
         m_sweepRows.normalRows += static_cast<uint64_t>(c.pointCount);
@@ -310,7 +311,7 @@ void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bo
 
 int ContactSolver::s_widestLanes = 8;
 
-void ContactSolver::buildBatches() {
+void ContactSolver::buildBatches(const ParallelFor& parallelFor) {
     m_batchesAhead = false;
     // Eight lanes of doubles need AVX-512 (x86-64-v4); elsewhere 512-bit vectors split into halves ran 2.2x slower
     // than four lanes in one AVX2 register (a microbenchmark of the row update, 2026-11-26).
@@ -321,19 +322,28 @@ void ContactSolver::buildBatches() {
 #endif
     m_width = wide && s_widestLanes >= 8 ? 8 : 4;
     if (m_width == 8)
-        buildBatches(m_store8);
+        buildBatches(m_store8, parallelFor);
     else
-        buildBatches(m_store4);
+        buildBatches(m_store4, parallelFor);
 }
 
 template <int W>
-void ContactSolver::buildBatches(BatchStore<W>& store) {
+void ContactSolver::buildBatches(BatchStore<W>& store, const ParallelFor& parallelFor) {
+    // Each part below writes only its own constraints, levels or batches, so a team can share it out (parallelFor)
+    // with the same results; the layout of the batches in between is a short serial pass over one byte per
+    // constraint. Built in one serial pass, the batches took 3.0 ms a step of the 5.9 ms that large_pyramid's
+    // prepare_contacts took over its first 120 frames on one thread, and were the largest serial part of its step on
+    // two; shared out, prepare_contacts on two threads went from 6.6-6.8 to 4.9-5.2 ms a step over frames 60-120
+    // (2026-11-27, two interleaved runs each, the same frames).
+    const auto run = [&](size_t count, const std::function<void(size_t, size_t)>& body) {
+        if (parallelFor)
+            parallelFor(count, body);
+        else
+            body(0, count);
+    };
     std::vector<Batch<W>>& batches = store.batches;
     std::vector<BatchPoint<W>>& points = store.points;
-    batches.clear();
-    points.clear();
     const size_t levels = levelCount();
-    m_batchLevelStart.assign(levels + 1, 0);
     auto set = [](auto* lanes, const Vec3& v, int lane) {
         for (int axis = 0; axis < 3; ++axis)
             lanes[axis].v[lane] = static_cast<std::remove_reference_t<decltype(lanes[axis].v[0])>>(v[axis]);
@@ -343,31 +353,60 @@ void ContactSolver::buildBatches(BatchStore<W>& store) {
     // then have work of the same size, and a point slot in which no lane pushes skips its warm start, as the scalar
     // sweep skips such points.
     // The keys are worked out once per constraint, not in every comparison of the sort.
-    thread_local std::vector<uint8_t> key;
+    std::vector<uint8_t>& key = m_batchKey;
     key.resize(m_constraints.size());
-    for (size_t i = 0; i < m_constraints.size(); ++i) {
-        const ContactConstraint& c = m_constraints[i];
-        bool pushing = false;
-        for (int k = 0; k < c.pointCount; ++k)
-            pushing = pushing || c.points[k].normalImpulse != 0.0;
-        key[i] = static_cast<uint8_t>((pushing ? 0 : 8) + (4 - c.pointCount));
-    }
-    for (size_t level = 0; level < levels; ++level)
-        std::stable_sort(m_solveOrder.begin() + levelBegin(level), m_solveOrder.begin() + levelEnd(level),
-                         [&](uint32_t l, uint32_t r) { return key[l] < key[r]; });
+    run(m_constraints.size(), [&](size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            const ContactConstraint& c = m_constraints[i];
+            bool pushing = false;
+            for (int k = 0; k < c.pointCount; ++k)
+                pushing = pushing || c.points[k].normalImpulse != 0.0;
+            key[i] = static_cast<uint8_t>((pushing ? 0 : 8) + (4 - c.pointCount));
+        }
+    });
+    run(levels, [&](size_t begin, size_t end) {
+        for (size_t level = begin; level < end; ++level)
+            std::stable_sort(m_solveOrder.begin() + levelBegin(level), m_solveOrder.begin() + levelEnd(level),
+                             [&](uint32_t l, uint32_t r) { return key[l] < key[r]; });
+    });
+    // The layout: each batch's first constraint in m_solveOrder, its lanes and its points. A batch has as many point
+    // slots as its constraint with the most points; the key holds each constraint's point count (4 - key % 8).
+    m_batchLevelStart.assign(levels + 1, 0);
+    std::vector<BatchLayout>& layout = m_batchLayout;
+    layout.clear();
+    uint32_t pointTotal = 0;
     for (size_t level = 0; level < levels; ++level) {
-        m_batchLevelStart[level] = static_cast<uint32_t>(batches.size());
+        m_batchLevelStart[level] = static_cast<uint32_t>(layout.size());
         for (size_t first = levelBegin(level); first < levelEnd(level); first += W) {
             const size_t lanes = std::min<size_t>(W, levelEnd(level) - first);
-            Batch<W>& batch = batches.emplace_back();
-            batch.firstPoint = static_cast<uint32_t>(points.size());
+            uint32_t pointCount = 0;
             for (size_t l = 0; l < lanes; ++l)
-                batch.pointCount = std::max<uint32_t>(
-                    batch.pointCount, static_cast<uint32_t>(m_constraints[m_solveOrder[first + l]].pointCount));
-            points.resize(points.size() + batch.pointCount);
-            for (size_t l = 0; l < lanes; ++l) {
+                pointCount = std::max<uint32_t>(pointCount, 4u - key[m_solveOrder[first + l]] % 8u);
+            layout.push_back({static_cast<uint32_t>(first), static_cast<uint32_t>(lanes), pointTotal, pointCount});
+            pointTotal += pointCount;
+        }
+    }
+    m_batchLevelStart[levels] = static_cast<uint32_t>(layout.size());
+    // Every batch and point is written whole below (an empty lane or point slot zeroed), so the arrays are only
+    // sized here.
+    static_assert(std::is_trivially_copyable_v<Batch<W>> && std::is_trivially_copyable_v<BatchPoint<W>>);
+    batches.resize(layout.size());
+    points.resize(pointTotal);
+    run(layout.size(), [&](size_t begin, size_t end) {
+        for (size_t b = begin; b < end; ++b) {
+            const BatchLayout& at = layout[b];
+            // Lanes past at.lanes stay empty: no constraint, bodies 0, zero masses and impulses.
+            Batch<W>& batch = batches[b];
+            std::memset(static_cast<void*>(&batch), 0, sizeof(Batch<W>));
+            for (int l = 0; l < W; ++l)
+                batch.constraint[l] = kNoConstraint;
+            batch.firstPoint = at.firstPoint;
+            batch.pointCount = at.pointCount;
+            for (uint32_t k = 0; k < at.pointCount; ++k)
+                std::memset(static_cast<void*>(&points[at.firstPoint + k]), 0, sizeof(BatchPoint<W>));
+            for (uint32_t l = 0; l < at.lanes; ++l) {
                 const int lane = static_cast<int>(l);
-                const uint32_t index = m_solveOrder[first + l];
+                const uint32_t index = m_solveOrder[at.first + l];
                 const ContactConstraint& c = m_constraints[index];
                 batch.bodyA[l] = c.bodyA;
                 batch.bodyB[l] = c.bodyB;
@@ -389,7 +428,7 @@ void ContactSolver::buildBatches(BatchStore<W>& store) {
                 batch.twistImpulse.v[l] = c.twistImpulse;
                 for (int k = 0; k < c.pointCount; ++k) {
                     const ContactConstraint::Point& p = c.points[c.order[k]];
-                    BatchPoint<W>& q = points[batch.firstPoint + static_cast<uint32_t>(k)];
+                    BatchPoint<W>& q = points[at.firstPoint + static_cast<uint32_t>(k)];
                     set(q.rA, p.rA, lane);
                     set(q.rB, p.rB, lane);
                     q.baseSeparation.v[l] = static_cast<float>(p.baseSeparation);
@@ -400,8 +439,7 @@ void ContactSolver::buildBatches(BatchStore<W>& store) {
                 }
             }
         }
-    }
-    m_batchLevelStart[levels] = static_cast<uint32_t>(batches.size());
+    });
 }
 
 void ContactSolver::syncFromBatches() const {

@@ -252,9 +252,13 @@ private:
         std::vector<BatchPoint<W>> points;
     };
     static constexpr uint32_t kNoConstraint = 0xffffffffu;
+    // Where buildBatches() puts a batch: its first constraint in m_solveOrder, its lanes, and its point slots.
+    struct BatchLayout {
+        uint32_t first, lanes, firstPoint, pointCount;
+    };
 
     template <int W>
-    void buildBatches(BatchStore<W>& store);
+    void buildBatches(BatchStore<W>& store, const ParallelFor& parallelFor);
     template <int W>
     void syncFromBatches(const BatchStore<W>& store) const;
     // The sweeps over batches begin..end of W lanes (ContactSolverWide.cpp).
@@ -267,7 +271,7 @@ private:
     template <int W>
     void solveBatches(BatchStore<W>& store, std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
     size_t batchCount() const { return m_width == 8 ? m_store8.batches.size() : m_store4.batches.size(); }
-    void buildBatches();
+    void buildBatches(const ParallelFor& parallelFor);
     // Copies the batches' impulses and impact records back to m_constraints, if a batched sweep ran since.
     void syncFromBatches() const;
     void scheduleLevels(size_t bodyCount, std::span<const uint8_t> bodyPart);
@@ -275,6 +279,8 @@ private:
     void solveOne(std::span<SolverBody> bodies, ContactConstraint& c, bool useBias);
 
     mutable std::vector<ContactConstraint> m_constraints;
+    std::vector<uint8_t> m_batchKey;        // per constraint: its group within its level (buildBatches())
+    std::vector<BatchLayout> m_batchLayout; // per batch (buildBatches())
     std::vector<uint32_t> m_solveOrder; // constraint indices, level by level (grouped within a level: buildBatches())
     std::vector<uint8_t> m_segment;     // per constraint: its part, or kBoundarySegment
     size_t m_segmentLevelStart[kParts + 2] = {};

@@ -101,12 +101,12 @@ inline void applyRowT(SolverBody& a, SolverBody& b, const Inverse& ia, const Inv
 
 // One manifold's constraint, for one step (see prepare()).
 void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, uint32_t indexB, Real friction,
-                     Real restitution, uint8_t held, std::span<const SolverBody> bodies, std::span<const Vec3> centers,
-                     Real h, const ContactSolverSettings& settings) {
+                     Real restitution, ContactSolver::Hold held, std::span<const SolverBody> bodies,
+                     std::span<const Vec3> centers, Real h, const ContactSolverSettings& settings) {
     c.bodyA = indexA;
     c.bodyB = indexB;
-    c.scaleA = held == ContactSolver::kHoldA ? 0.0 : 1.0;
-    c.scaleB = held == ContactSolver::kHoldB ? 0.0 : 1.0;
+    c.scaleA = held.side == ContactSolver::kHoldA ? held.scale : 1.0;
+    c.scaleB = held.side == ContactSolver::kHoldB ? held.scale : 1.0;
     c.normal = m.normal;
     tangentBasis(m.normal, c.tangent[0], c.tangent[1]);
     c.friction = friction;
@@ -225,7 +225,7 @@ void ContactSolver::prepare(std::span<Manifold* const> manifolds, std::span<cons
                             std::span<const Real> restitution, std::span<const SolverBody> bodies,
                             std::span<const Vec3> centers, Real h, const ContactSolverSettings& settings,
                             std::span<const uint8_t> bodyPart, const ParallelFor& parallelFor,
-                            std::span<const uint8_t> heldSide) {
+                            std::span<const Hold> held) {
     m_settings = settings;
     m_inverseH = h > 0.0 ? 1.0 / h : 0.0;
     m_h = h;
@@ -235,7 +235,7 @@ void ContactSolver::prepare(std::span<Manifold* const> manifolds, std::span<cons
     const auto setUp = [&](size_t begin, size_t end) {
         for (size_t i = begin; i < end; ++i)
             setUpConstraint(m_constraints[i], *manifolds[i], solverIndexA[i], solverIndexB[i], friction[i],
-                            restitution[i], heldSide.empty() ? uint8_t(0) : heldSide[i], bodies, centers, h, settings);
+                            restitution[i], held.empty() ? Hold{} : held[i], bodies, centers, h, settings);
     };
     if (parallelFor)
         parallelFor(manifolds.size(), setUp);

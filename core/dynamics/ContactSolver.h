@@ -100,13 +100,22 @@ struct ContactConstraint {
     Real frictionImpulse[2] = {0.0, 0.0};   // accumulated, along tangent[0] and tangent[1]
     Real twistMass = 0.0;
     Real twistImpulse = 0.0;
-    // 0 for a side held still by this constraint (its inverse mass and inertia count as zero here, see prepare()'s
-    // heldSide), else 1. Multiplying by 1 changes no bit, so constraints that hold nothing give the same numbers.
+    // The scale of each side's inverse mass and inertia in this constraint: 0 for a side held still, between 0 and 1
+    // for one made heavier here (see prepare()'s held), else 1. Multiplying by 1 changes no bit, so constraints that
+    // hold nothing give the same numbers.
     Real scaleA = 1.0, scaleB = 1.0;
 };
 
 class ContactSolver {
 public:
+    static constexpr uint8_t kHoldA = 1, kHoldB = 2;
+    // A side of a manifold held for its constraint (prepare()): kHoldA, kHoldB or 0 for none, and the scale of that
+    // side's inverse mass and inertia (0: held still).
+    struct Hold {
+        uint8_t side = 0;
+        Real scale = 0.0;
+    };
+
     // Calls body(begin, end) for ranges that together cover [0, count) once each, on one thread or several.
     using ParallelFor = std::function<void(size_t count, const std::function<void(size_t begin, size_t end)>& body)>;
 
@@ -122,15 +131,15 @@ public:
     // between a body of each part), each segment in manifold order. The two parts share no moving body, so two
     // threads can sweep them at once with no barrier between levels (segmentLevelBegin()).
     //
-    // heldSide, if given, holds one side of a manifold still for its constraint: kHoldA or kHoldB (else 0). The held
-    // body's velocity is read but the constraint's impulses do not move it, as if it were infinitely heavy, so the
-    // other body is stopped by it in one sweep (shock propagation: World holds the lower of two bodies).
+    // held, if given, holds one side of each manifold for its constraint (Hold: side kHoldA or kHoldB, else 0). A side
+    // held with scale 0 is read but the constraint's impulses do not move it, as if it were infinitely heavy, so the
+    // other body is stopped by it in one sweep (shock propagation: World holds the lower of two bodies). A scale
+    // between 0 and 1 multiplies that side's inverse mass and inertia in this constraint only.
     void prepare(std::span<Manifold* const> manifolds, std::span<const uint32_t> solverIndexA,
                  std::span<const uint32_t> solverIndexB, std::span<const Real> friction,
                  std::span<const Real> restitution, std::span<const SolverBody> bodies, std::span<const Vec3> centers,
                  Real h, const ContactSolverSettings& settings, std::span<const uint8_t> bodyPart = {},
-                 const ParallelFor& parallelFor = {}, std::span<const uint8_t> heldSide = {});
-    static constexpr uint8_t kHoldA = 1, kHoldB = 2;
+                 const ParallelFor& parallelFor = {}, std::span<const Hold> held = {});
     static constexpr size_t kParts = 2;
     static constexpr size_t kBoundarySegment = kParts; // segments 0 .. kParts - 1 are the parts
 

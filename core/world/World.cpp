@@ -581,7 +581,7 @@ void World::heightsAboveSupport(std::span<const uint32_t> moving) {
     // refineMassRatio, each moving body's height is the fewest contacts from it down to an immovable body (1 when it
     // touches one). A contact between bodies of different heights holds the lower one still (shock propagation,
     // Guendelman et al. 2003) when it holds the upper one up against gravity and the upper one is holdMassRatio times
-    // heavier (heldSide()), so the upper body is stopped by it as by the ground. Heights are shortest
+    // heavier (contactHold()), so the upper body is stopped by it as by the ground. Heights are shortest
     // paths, the same whatever the order of the contacts. Other islands are left as they are, to the bit.
     const auto inMixedIsland = [&](uint32_t i) {
         const uint32_t root = m_island[i];
@@ -625,25 +625,32 @@ void World::heightsAboveSupport(std::span<const uint32_t> moving) {
             m_height[i] = 0;
 }
 
-uint8_t World::heldSide(const Contact& contact) const {
-    // Of two moving bodies at different heights (heightsAboveSupport()), the lower one is held still when the
-    // contact holds the upper one up against gravity (its normal within 45 degrees of vertical, the lower body below)
-    // and the upper one is holdMassRatio times heavier. A heavy body swung sideways into a light one on the floor is
-    // not stopped by it, however many contacts lie between the light one and the floor.
+ContactSolver::Hold World::contactHold(const Contact& contact) const {
+    // Of two moving bodies that both rest on something (heightsAboveSupport()), the lower one is the one fewer
+    // contacts from an immovable body, or at the same count the one whose centre is lower. It is held still when the
+    // contact holds the upper one up against gravity (its normal within 45 degrees of vertical, the lower body
+    // below), the two are at different heights and the upper one is holdMassRatio times heavier. A contact that
+    // presses the lower body down from the side (the normal at least wedgeRise above horizontal) makes it heavier
+    // instead, to 1/holdMassRatio of the upper body (see WorldTuning::holdMassRatio). A heavy body swung flat into a
+    // light one on the floor is not stopped by it, however many contacts lie between the light one and the floor.
     const uint32_t ha = m_height[contact.bodyA], hb = m_height[contact.bodyB];
     const Real g2 = glm::dot(m_gravity, m_gravity);
-    if (ha == 0 || hb == 0 || ha == hb || !(g2 > 0.0))
-        return 0;
-    const bool lowerIsA = ha < hb;
-    const uint32_t lower = lowerIsA ? contact.bodyA : contact.bodyB, upper = lowerIsA ? contact.bodyB : contact.bodyA;
+    if (ha == 0 || hb == 0 || !(g2 > 0.0))
+        return {};
     const Vec3 up = -m_gravity / std::sqrt(g2);
+    const bool lowerIsA =
+        ha != hb ? ha < hb : glm::dot(m_state.position[contact.bodyB] - m_state.position[contact.bodyA], up) > 0.0;
+    const uint32_t lower = lowerIsA ? contact.bodyA : contact.bodyB, upper = lowerIsA ? contact.bodyB : contact.bodyA;
     // Along the normal and by centres, from the lower body to the upper one (the normal points from A to B).
     const Real along = (lowerIsA ? 1.0 : -1.0) * glm::dot(contact.manifold.normal, up);
     const Real rise = glm::dot(m_state.position[upper] - m_state.position[lower], up);
-    if (along < std::sqrt(0.5) || !(rise > 0.0) ||
-        m_tuning.holdMassRatio * m_state.info[lower].mass > m_state.info[upper].mass)
-        return 0;
-    return lowerIsA ? ContactSolver::kHoldA : ContactSolver::kHoldB;
+    const Real lowerMass = m_state.info[lower].mass, upperMass = m_state.info[upper].mass;
+    if (!(rise > 0.0) || m_tuning.holdMassRatio * lowerMass > upperMass || !(along >= m_tuning.wedgeRise))
+        return {};
+    const uint8_t side = lowerIsA ? ContactSolver::kHoldA : ContactSolver::kHoldB;
+    if (ha != hb && along >= std::sqrt(0.5))
+        return {side, 0.0};
+    return {side, m_tuning.holdMassRatio * lowerMass / upperMass};
 }
 
 void World::solve() {
@@ -941,7 +948,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
         scratch.indexB.push_back(m_solverIndex[contact.bodyB]);
         scratch.friction.push_back(contact.friction);
         scratch.restitution.push_back(contact.restitution);
-        scratch.held.push_back(m_anyHeight ? heldSide(contact) : uint8_t(0));
+        scratch.held.push_back(m_anyHeight ? contactHold(contact) : ContactSolver::Hold{});
     }
 
     // The substeps integrate a copy of the group's bodies (group[k] is local body k), written back after them.

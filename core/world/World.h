@@ -64,16 +64,17 @@ struct WorldTuning {
     // (World::heightsAboveSupport()). Only the contacts where a much heavier body bears on a light one hold: light
     // boxes among themselves are solved as before, even in an island with a heavy body.
     //
-    // Where the heavier body bears on the lower one from the side, pressing it down into its support (the normal
-    // between 45 degrees from vertical and wedgeRise, the sine of its angle above horizontal, as seen from the lower
-    // body), the lower body is not held but made heavier in that contact only, to 1/holdMassRatio of the upper one
-    // (World::contactHold()). A 1,000 kg ball rolled at 10 m/s into a 1 kg box on the floor wedged the box into the
-    // floor: the sweeps passed the ball's momentum down through the box a thousandth at a time, and the box sank
-    // 2.2-4.3 cm at 4, 5, 7, 8, 10 and 12 substeps (1.0 mm at 6, by luck) and threw the ball up to 1.1-1.4 m.
-    // Made heavier, the box sinks at most 1.2 mm at any of those substep counts and the ball rolls over it (its
-    // centre rises 0.20 m, the box's height). The price: momentum is not conserved in that contact; the ball comes
-    // out of its first strike at 7.0 m/s instead of 8.5 m/s, as if it had met a 100 kg box. (Made a tenth as heavy,
-    // 1:100, the box still sank 7.3 mm at 8 substeps.) A heavy body pushed flat against a light one is left alone.
+    // Where the heavier body presses the lower one down into its support less steeply than that, or the two are at
+    // the same height (both on the floor), with the normal at least wedgeRise (the sine of its angle above
+    // horizontal, seen from the lower body), the lower body is not held but made heavier in that contact only, to
+    // 1/holdMassRatio of the upper one (World::contactHold()). A 1,000 kg ball rolled at 10 m/s into a 1 kg box on
+    // the floor wedged the box into the floor: the sweeps passed the ball's momentum down through the box a
+    // thousandth at a time, and the box sank 2.2-4.3 cm at 4, 5, 7, 8, 10 and 12 substeps (1.0 mm at 6, by luck) and
+    // threw the ball up to 1.1-1.4 m. Made heavier, the box sinks at most 1.2 mm at any of those substep counts and
+    // the ball rolls over it (its centre rises 0.20-0.22 m; the box is 0.2 m tall). The price: momentum is not
+    // conserved in that contact; the ball comes out of its first strike at 7.0 m/s instead of 8.5 m/s, as if it had
+    // met a 100 kg box. (Made a tenth as heavy, 1:100, the box still sank 7.3 mm at 8 substeps.) A heavy block slid
+    // flat into a light cube on the floor still sends it off (2.68 m/s instead of 2.76 m/s).
     Real holdMassRatio = 10.0;
     Real wedgeRise = 0.2;
     // Sweeps of the relax pass per substep (the solve pass runs `iterations` sweeps). The relax pass removes the

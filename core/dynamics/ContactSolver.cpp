@@ -99,6 +99,15 @@ inline void applyRowT(SolverBody& a, SolverBody& b, const Inverse& ia, const Inv
     }
 }
 
+// body over [0, count): shared out by parallelFor if there is one, else in one call on this thread.
+void shareOut(const ContactSolver::ParallelFor& parallelFor, size_t count,
+              const std::function<void(size_t, size_t)>& body) {
+    if (parallelFor)
+        parallelFor(count, body);
+    else
+        body(0, count);
+}
+
 // One manifold's constraint, for one step (see prepare()).
 void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, uint32_t indexB, Real friction,
                      Real restitution, ContactSolver::Hold held, std::span<const SolverBody> bodies,
@@ -232,15 +241,11 @@ void ContactSolver::prepare(std::span<Manifold* const> manifolds, std::span<cons
     m_soft = softness(2.0 * kPi * settings.contactHertz, settings.dampingRatio, h);
 
     m_constraints.resize(manifolds.size());
-    const auto setUp = [&](size_t begin, size_t end) {
+    shareOut(parallelFor, manifolds.size(), [&](size_t begin, size_t end) {
         for (size_t i = begin; i < end; ++i)
             setUpConstraint(m_constraints[i], *manifolds[i], solverIndexA[i], solverIndexB[i], friction[i],
                             restitution[i], held.empty() ? Hold{} : held[i], bodies, centers, h, settings);
-    };
-    if (parallelFor)
-        parallelFor(manifolds.size(), setUp);
-    else
-        setUp(0, manifolds.size());
+    });
     scheduleLevels(bodies.size(), bodyPart);
     buildBatches(parallelFor);
     m_sweepRows = {};
@@ -335,12 +340,6 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const ParallelFor& parall
     // prepare_contacts took over its first 120 frames on one thread, and were the largest serial part of its step on
     // two; shared out, prepare_contacts on two threads went from 6.6-6.8 to 4.9-5.2 ms a step over frames 60-120
     // (2026-11-27, two interleaved runs each, the same frames).
-    const auto run = [&](size_t count, const std::function<void(size_t, size_t)>& body) {
-        if (parallelFor)
-            parallelFor(count, body);
-        else
-            body(0, count);
-    };
     std::vector<Batch<W>>& batches = store.batches;
     std::vector<BatchPoint<W>>& points = store.points;
     const size_t levels = levelCount();
@@ -355,7 +354,7 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const ParallelFor& parall
     // The keys are worked out once per constraint, not in every comparison of the sort.
     std::vector<uint8_t>& key = m_batchKey;
     key.resize(m_constraints.size());
-    run(m_constraints.size(), [&](size_t begin, size_t end) {
+    shareOut(parallelFor, m_constraints.size(), [&](size_t begin, size_t end) {
         for (size_t i = begin; i < end; ++i) {
             const ContactConstraint& c = m_constraints[i];
             bool pushing = false;
@@ -364,7 +363,7 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const ParallelFor& parall
             key[i] = static_cast<uint8_t>((pushing ? 0 : 8) + (4 - c.pointCount));
         }
     });
-    run(levels, [&](size_t begin, size_t end) {
+    shareOut(parallelFor, levels, [&](size_t begin, size_t end) {
         for (size_t level = begin; level < end; ++level)
             std::stable_sort(m_solveOrder.begin() + levelBegin(level), m_solveOrder.begin() + levelEnd(level),
                              [&](uint32_t l, uint32_t r) { return key[l] < key[r]; });
@@ -392,7 +391,7 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const ParallelFor& parall
     static_assert(std::is_trivially_copyable_v<Batch<W>> && std::is_trivially_copyable_v<BatchPoint<W>>);
     batches.resize(layout.size());
     points.resize(pointTotal);
-    run(layout.size(), [&](size_t begin, size_t end) {
+    shareOut(parallelFor, layout.size(), [&](size_t begin, size_t end) {
         for (size_t b = begin; b < end; ++b) {
             const BatchLayout& at = layout[b];
             // Lanes past at.lanes stay empty: no constraint, bodies 0, zero masses and impulses.

@@ -5,6 +5,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -111,9 +112,14 @@ private slots:
         const double ourMedian = ours.value("median_ms").toDouble();
         const double bulletMedian = bullet.value("median_ms").toDouble();
         QVERIFY(ourMedian > 0.0 && bulletMedian > 0.0);
-        // The printed ratio is the ratio of the printed medians (to their rounding).
-        QVERIFY(std::abs(ratio.value("median").toDouble() - ourMedian / bulletMedian) <=
-                0.01 + 0.01 * ourMedian / bulletMedian);
+        // The printed ratio is the ratio of the medians, which the lines round to 0.0005 ms either way, and the
+        // ratio to 0.005. (A fixed 1 % tolerance failed when Bullet's stack20 step took 0.040 ms: 0.0005 of it is
+        // 1.25 %.)
+        const double lowest = (ourMedian - 0.0005) / (bulletMedian + 0.0005);
+        const double highest = (ourMedian + 0.0005) / std::max(bulletMedian - 0.0005, 1e-9);
+        const double printed = ratio.value("median").toDouble();
+        QVERIFY2(printed >= lowest - 0.0051 && printed <= highest + 0.0051,
+                 qPrintable(QString("ratio %1, medians %2 / %3").arg(printed).arg(ourMedian).arg(bulletMedian)));
         if (noSleep) // nothing sleeps after 20 frames anyway, but with --no-sleep both engines keep all awake
             QCOMPARE(bullet.value("awake").toInt(), bodies - 1);
         if (scene == "stack20") // the cubes rest on each other in both engines (the ramps' cubes are still falling)

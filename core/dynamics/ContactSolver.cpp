@@ -391,6 +391,7 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const ParallelFor& parall
     static_assert(std::is_trivially_copyable_v<Batch<W>> && std::is_trivially_copyable_v<BatchPoint<W>>);
     batches.resize(layout.size());
     points.resize(pointTotal);
+    m_laneOf.resize(m_constraints.size());
     shareOut(parallelFor, layout.size(), [&](size_t begin, size_t end) {
         for (size_t b = begin; b < end; ++b) {
             const BatchLayout& at = layout[b];
@@ -410,6 +411,7 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const ParallelFor& parall
                 batch.bodyA[l] = c.bodyA;
                 batch.bodyB[l] = c.bodyB;
                 batch.constraint[l] = index;
+                m_laneOf[index] = static_cast<uint32_t>(b * W + l);
                 set(batch.normal, c.normal, lane);
                 set(batch.tangent[0], c.tangent[0], lane);
                 set(batch.tangent[1], c.tangent[1], lane);
@@ -700,16 +702,48 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
     }
 }
 
-void ContactSolver::storeImpulses(std::span<Manifold* const> manifolds) const {
-    syncFromBatches();
-    for (size_t i = 0; i < manifolds.size() && i < m_constraints.size(); ++i) {
-        const ContactConstraint& c = m_constraints[i];
-        Manifold& m = *manifolds[i];
-        for (int k = 0; k < c.pointCount; ++k)
-            m.points[k].normalImpulse = c.points[k].normalImpulse;
-        m.frictionImpulse = c.frictionImpulse[0] * c.tangent[0] + c.frictionImpulse[1] * c.tangent[1];
-        m.twistImpulse = c.twistImpulse;
+void ContactSolver::storeImpulses(std::span<Manifold* const> manifolds, const ParallelFor& parallelFor) const {
+    const size_t count = std::min(manifolds.size(), m_constraints.size());
+    if (m_batchesAhead) {
+        if (m_width == 8)
+            storeFromBatches(m_store8, manifolds.first(count), parallelFor);
+        else
+            storeFromBatches(m_store4, manifolds.first(count), parallelFor);
+        return;
     }
+    shareOut(parallelFor, count, [&](size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            const ContactConstraint& c = m_constraints[i];
+            Manifold& m = *manifolds[i];
+            for (int k = 0; k < c.pointCount; ++k)
+                m.points[k].normalImpulse = c.points[k].normalImpulse;
+            m.frictionImpulse = c.frictionImpulse[0] * c.tangent[0] + c.frictionImpulse[1] * c.tangent[1];
+            m.twistImpulse = c.twistImpulse;
+        }
+    });
+}
+
+template <int W>
+void ContactSolver::storeFromBatches(const BatchStore<W>& store, std::span<Manifold* const> manifolds,
+                                     const ParallelFor& parallelFor) const {
+    // The same numbers as syncFromBatches() and then the loop above, but straight from the batches, in manifold
+    // order: the member that writes a manifold here is the one that reads it in the next step's prepare(), so its
+    // cache lines need not cross to the other core. (Written by one thread after syncing, the manifolds were read
+    // half by the other core, whose half of the set-up then took twice as long as the writer's half.)
+    shareOut(parallelFor, manifolds.size(), [&](size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            const ContactConstraint& c = m_constraints[i];
+            const Batch<W>& batch = store.batches[m_laneOf[i] / W];
+            const uint32_t lane = m_laneOf[i] % W;
+            Manifold& m = *manifolds[i];
+            for (int k = 0; k < c.pointCount; ++k)
+                m.points[c.order[k]].normalImpulse =
+                    store.points[batch.firstPoint + static_cast<uint32_t>(k)].impulse.v[lane];
+            m.frictionImpulse =
+                batch.frictionImpulse[0].v[lane] * c.tangent[0] + batch.frictionImpulse[1].v[lane] * c.tangent[1];
+            m.twistImpulse = batch.twistImpulse.v[lane];
+        }
+    });
 }
 
 } // namespace rl

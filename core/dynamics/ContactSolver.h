@@ -192,8 +192,8 @@ public:
     // third apex of an e = 0.5 drop from 5 m came out 5.0 % low (issue 4 asks for 3 %).
     void applyRestitution(std::span<SolverBody> bodies);
     // Writes the accumulated impulses back to the manifolds (those given to prepare()) for warm starting in the next
-    // step.
-    void storeImpulses(std::span<Manifold* const> manifolds) const;
+    // step. parallelFor, if given, shares the manifolds out (each is written alone, so the results are the same).
+    void storeImpulses(std::span<Manifold* const> manifolds, const ParallelFor& parallelFor = {}) const;
 
     // One value per lane of a batch of W lanes (the batch storage below; ContactSolverWide.cpp loads them into
     // vectors).
@@ -270,6 +270,9 @@ private:
     void buildBatches(BatchStore<W>& store, const ParallelFor& parallelFor);
     template <int W>
     void syncFromBatches(const BatchStore<W>& store) const;
+    template <int W>
+    void storeFromBatches(const BatchStore<W>& store, std::span<Manifold* const> manifolds,
+                          const ParallelFor& parallelFor) const;
     // The sweeps over batches begin..end of W lanes (ContactSolverWide.cpp).
     void warmStartBatches4(std::span<SolverBody> bodies, size_t begin, size_t end);
     void warmStartBatches8(std::span<SolverBody> bodies, size_t begin, size_t end);
@@ -290,6 +293,7 @@ private:
     mutable std::vector<ContactConstraint> m_constraints;
     std::vector<uint8_t> m_batchKey;        // per constraint: its group within its level (buildBatches())
     std::vector<BatchLayout> m_batchLayout; // per batch (buildBatches())
+    std::vector<uint32_t> m_laneOf;         // per constraint: its batch times the lane width, plus its lane
     std::vector<uint32_t> m_solveOrder; // constraint indices, level by level (grouped within a level: buildBatches())
     std::vector<uint8_t> m_segment;     // per constraint: its part, or kBoundarySegment
     size_t m_segmentLevelStart[kParts + 2] = {};

@@ -1139,7 +1139,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
     if (mayUseTeam)
         storeTimer.emplace(m_profile, Stage::StoreImpulses);
     local.scatterMotion(m_state, group);
-    solver.storeImpulses(scratch.manifolds);
+    solver.storeImpulses(scratch.manifolds, parallelFor);
     for (uint32_t i : group)
         m_solverIndex[i] = 0;
 }

@@ -240,23 +240,25 @@ void ContactSolver::prepare(std::span<Manifold* const> manifolds, std::span<cons
     m_h = h;
     m_soft = softness(2.0 * kPi * settings.contactHertz, settings.dampingRatio, h);
 
-    m_constraints.resize(manifolds.size());
-    shareOut(parallelFor, manifolds.size(), [&](size_t begin, size_t end) {
-        for (size_t i = begin; i < end; ++i)
-            setUpConstraint(m_constraints[i], *manifolds[i], solverIndexA[i], solverIndexB[i], friction[i],
-                            restitution[i], held.empty() ? Hold{} : held[i], bodies, centers, h, settings);
-    });
-    scheduleLevels(bodies.size(), bodyPart);
-    buildBatches(parallelFor);
+    m_count = manifolds.size();
+    // The constraints are set up straight into the batches (buildBatches()); the whole records are kept as well only
+    // where something reads them after prepare(). Written in manifold order and read back level by level, 620 bytes
+    // each, they took a third of large_pyramid's prepare_contacts.
+    m_kept = m_keepConstraints || settings.restitution;
+    m_constraints.resize(m_kept ? m_count : 0);
+    scheduleLevels(bodies.size(), bodyPart, solverIndexA, solverIndexB);
+    const SetUpInputs inputs{manifolds, solverIndexA, solverIndexB, friction, restitution, bodies, centers, held};
+    buildBatches(inputs, parallelFor);
     m_sweepRows = {};
-    for (const ContactConstraint& c : m_constraints) {
-        m_sweepRows.normalRows += static_cast<uint64_t>(c.pointCount);
-        if (settings.friction && c.friction > 0.0)
+    for (size_t i = 0; i < m_count; ++i)
+        if (settings.friction && friction[i] > 0.0)
             m_sweepRows.frictionRows += 3u; // the tangent block (two rows) and the twist
-    }
+    for (uint8_t key : m_batchKey)
+        m_sweepRows.normalRows += 4u - key % 8u; // the point count (see buildBatches())
 }
 
-void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bodyPart) {
+void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bodyPart, std::span<const uint32_t> bodyA,
+                                   std::span<const uint32_t> bodyB) {
     // Level schedule of the sequential order: a constraint's level is one more than the highest level among the
     // earlier constraints (in manifold order) that share one of its moving bodies. Solving level by level then
     // performs, for every body, the same updates in the same order as solving the constraints one after the other,
@@ -268,34 +270,33 @@ void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bo
     //
     // With parts, the sequential order is segment by segment (see prepare()), and each segment's levels follow the
     // previous segment's, so that a segment is a contiguous run of levels and of batches.
-    m_segment.resize(m_constraints.size());
-    for (size_t i = 0; i < m_constraints.size(); ++i) {
-        const ContactConstraint& c = m_constraints[i];
+    m_segment.resize(m_count);
+    for (size_t i = 0; i < m_count; ++i) {
+        const uint32_t a = bodyA[i], b = bodyB[i];
         if (bodyPart.empty())
             m_segment[i] = 0;
-        else if (c.bodyA == 0 || c.bodyB == 0)
-            m_segment[i] = bodyPart[c.bodyA == 0 ? c.bodyB : c.bodyA];
+        else if (a == 0 || b == 0)
+            m_segment[i] = bodyPart[a == 0 ? b : a];
         else
-            m_segment[i] = bodyPart[c.bodyA] == bodyPart[c.bodyB] ? bodyPart[c.bodyA] : kBoundarySegment;
+            m_segment[i] = bodyPart[a] == bodyPart[b] ? bodyPart[a] : kBoundarySegment;
     }
     thread_local std::vector<uint32_t> nextLevel, levelOf;
     nextLevel.assign(bodyCount, 0);
-    levelOf.resize(m_constraints.size());
+    levelOf.resize(m_count);
     uint32_t levels = 0;
     const size_t segments = bodyPart.empty() ? 1 : kParts + 1;
     for (size_t segment = 0; segment < segments; ++segment) {
         m_segmentLevelStart[segment] = levels;
         const uint32_t first = levels;
-        for (size_t i = 0; i < m_constraints.size(); ++i) {
+        for (size_t i = 0; i < m_count; ++i) {
             if (m_segment[i] != segment)
                 continue;
-            const ContactConstraint& c = m_constraints[i];
-            const uint32_t level =
-                std::max({first, c.bodyA != 0 ? nextLevel[c.bodyA] : 0u, c.bodyB != 0 ? nextLevel[c.bodyB] : 0u});
-            if (c.bodyA != 0)
-                nextLevel[c.bodyA] = level + 1;
-            if (c.bodyB != 0)
-                nextLevel[c.bodyB] = level + 1;
+            const uint32_t a = bodyA[i], b = bodyB[i];
+            const uint32_t level = std::max({first, a != 0 ? nextLevel[a] : 0u, b != 0 ? nextLevel[b] : 0u});
+            if (a != 0)
+                nextLevel[a] = level + 1;
+            if (b != 0)
+                nextLevel[b] = level + 1;
             levelOf[i] = level;
             levels = std::max(levels, level + 1);
         }
@@ -309,14 +310,14 @@ void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bo
         m_levelStart[k + 1] += m_levelStart[k];
     thread_local std::vector<uint32_t> fill;
     fill.assign(m_levelStart.begin(), m_levelStart.end() - 1);
-    m_solveOrder.resize(m_constraints.size());
-    for (size_t i = 0; i < m_constraints.size(); ++i)
+    m_solveOrder.resize(m_count);
+    for (size_t i = 0; i < m_count; ++i)
         m_solveOrder[fill[levelOf[i]]++] = static_cast<uint32_t>(i);
 }
 
 int ContactSolver::s_widestLanes = 8;
 
-void ContactSolver::buildBatches(const ParallelFor& parallelFor) {
+void ContactSolver::buildBatches(const SetUpInputs& inputs, const ParallelFor& parallelFor) {
     m_batchesAhead = false;
     // Eight lanes of doubles need AVX-512 (x86-64-v4); elsewhere 512-bit vectors split into halves ran 2.2x slower
     // than four lanes in one AVX2 register (a microbenchmark of the row update, 2026-11-26).
@@ -327,19 +328,26 @@ void ContactSolver::buildBatches(const ParallelFor& parallelFor) {
 #endif
     m_width = wide && s_widestLanes >= 8 ? 8 : 4;
     if (m_width == 8)
-        buildBatches(m_store8, parallelFor);
+        buildBatches(m_store8, inputs, parallelFor);
     else
-        buildBatches(m_store4, parallelFor);
+        buildBatches(m_store4, inputs, parallelFor);
 }
 
 template <int W>
-void ContactSolver::buildBatches(BatchStore<W>& store, const ParallelFor& parallelFor) {
+void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs, const ParallelFor& parallelFor) {
     // Each part below writes only its own constraints, levels or batches, so a team can share it out (parallelFor)
     // with the same results; the layout of the batches in between is a short serial pass over one byte per
     // constraint. Built in one serial pass, the batches took 3.0 ms a step of the 5.9 ms that large_pyramid's
     // prepare_contacts took over its first 120 frames on one thread, and were the largest serial part of its step on
     // two; shared out, prepare_contacts on two threads went from 6.6-6.8 to 4.9-5.2 ms a step over frames 60-120
     // (2026-11-27, two interleaved runs each, the same frames).
+    //
+    // The fill sets each constraint up (setUpConstraint()) as it puts it in its lane. A pass that first wrote every
+    // record in manifold order, 620 bytes each, then read them back level by level, cost a write and a scattered read
+    // of some 10 MB a step in large_pyramid. Setting up in the fill, with the next batch's manifolds and bodies
+    // fetched ahead, prepare_contacts over frames 60-120 took 4.2-4.3 ms a step on one thread and 3.0-3.1 on two,
+    // against 4.8 and 3.7-3.8 before (2026-11-27, two interleaved runs; without the fetching ahead, 5.1-5.2 and
+    // 3.3-3.4).
     std::vector<Batch<W>>& batches = store.batches;
     std::vector<BatchPoint<W>>& points = store.points;
     const size_t levels = levelCount();
@@ -353,14 +361,15 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const ParallelFor& parall
     // sweep skips such points.
     // The keys are worked out once per constraint, not in every comparison of the sort.
     std::vector<uint8_t>& key = m_batchKey;
-    key.resize(m_constraints.size());
-    shareOut(parallelFor, m_constraints.size(), [&](size_t begin, size_t end) {
+    // (The manifold's impulses are the constraint's if warm starting is on, else zero: setUpConstraint().)
+    key.resize(m_count);
+    shareOut(parallelFor, m_count, [&](size_t begin, size_t end) {
         for (size_t i = begin; i < end; ++i) {
-            const ContactConstraint& c = m_constraints[i];
+            const Manifold& m = *inputs.manifolds[i];
             bool pushing = false;
-            for (int k = 0; k < c.pointCount; ++k)
-                pushing = pushing || c.points[k].normalImpulse != 0.0;
-            key[i] = static_cast<uint8_t>((pushing ? 0 : 8) + (4 - c.pointCount));
+            for (int k = 0; k < m.pointCount; ++k)
+                pushing = pushing || (m_settings.warmStarting && m.points[k].normalImpulse != 0.0);
+            key[i] = static_cast<uint8_t>((pushing ? 0 : 8) + (4 - m.pointCount));
         }
     });
     shareOut(parallelFor, levels, [&](size_t begin, size_t end) {
@@ -391,10 +400,26 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const ParallelFor& parall
     static_assert(std::is_trivially_copyable_v<Batch<W>> && std::is_trivially_copyable_v<BatchPoint<W>>);
     batches.resize(layout.size());
     points.resize(pointTotal);
-    m_laneOf.resize(m_constraints.size());
+    m_laneOf.resize(m_count);
+    m_order.resize(m_count);
     shareOut(parallelFor, layout.size(), [&](size_t begin, size_t end) {
         for (size_t b = begin; b < end; ++b) {
             const BatchLayout& at = layout[b];
+            // The next batch's manifolds and bodies are read in level order, scattered in memory: fetch them ahead.
+            if (b + 1 < end) {
+                const BatchLayout& next = layout[b + 1];
+                for (uint32_t l = 0; l < next.lanes; ++l) {
+                    const uint32_t index = m_solveOrder[next.first + l];
+                    const char* m = reinterpret_cast<const char*>(inputs.manifolds[index]);
+                    for (size_t line = 0; line < sizeof(Manifold); line += 64)
+                        __builtin_prefetch(m + line);
+                    for (const uint32_t body : {inputs.indexA[index], inputs.indexB[index]}) {
+                        const char* record = reinterpret_cast<const char*>(&inputs.bodies[body]);
+                        for (size_t line = 0; line < sizeof(SolverBody); line += 64)
+                            __builtin_prefetch(record + line);
+                    }
+                }
+            }
             // Lanes past at.lanes stay empty: no constraint, bodies 0, zero masses and impulses.
             Batch<W>& batch = batches[b];
             std::memset(static_cast<void*>(&batch), 0, sizeof(Batch<W>));
@@ -407,7 +432,14 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const ParallelFor& parall
             for (uint32_t l = 0; l < at.lanes; ++l) {
                 const int lane = static_cast<int>(l);
                 const uint32_t index = m_solveOrder[at.first + l];
-                const ContactConstraint& c = m_constraints[index];
+                ContactConstraint c;
+                setUpConstraint(c, *inputs.manifolds[index], inputs.indexA[index], inputs.indexB[index],
+                                inputs.friction[index], inputs.restitution[index],
+                                inputs.held.empty() ? Hold{} : inputs.held[index], inputs.bodies, inputs.centers, m_h,
+                                m_settings);
+                if (m_kept)
+                    m_constraints[index] = c;
+                std::copy(c.order, c.order + 4, m_order[index].begin());
                 batch.bodyA[l] = c.bodyA;
                 batch.bodyB[l] = c.bodyB;
                 batch.constraint[l] = index;
@@ -444,7 +476,7 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const ParallelFor& parall
 }
 
 void ContactSolver::syncFromBatches() const {
-    if (!m_batchesAhead)
+    if (!m_batchesAhead || !m_kept)
         return;
     m_batchesAhead = false;
     if (m_width == 8)
@@ -703,8 +735,9 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
 }
 
 void ContactSolver::storeImpulses(std::span<Manifold* const> manifolds, const ParallelFor& parallelFor) const {
-    const size_t count = std::min(manifolds.size(), m_constraints.size());
-    if (m_batchesAhead) {
+    const size_t count = std::min(manifolds.size(), m_count);
+    // The batches hold the impulses after any sweep, and also right after prepare() (as the constraints do).
+    if (m_batchesAhead || !m_kept) {
         if (m_width == 8)
             storeFromBatches(m_store8, manifolds.first(count), parallelFor);
         else
@@ -732,15 +765,17 @@ void ContactSolver::storeFromBatches(const BatchStore<W>& store, std::span<Manif
     // half by the other core, whose half of the set-up then took twice as long as the writer's half.)
     shareOut(parallelFor, manifolds.size(), [&](size_t begin, size_t end) {
         for (size_t i = begin; i < end; ++i) {
-            const ContactConstraint& c = m_constraints[i];
             const Batch<W>& batch = store.batches[m_laneOf[i] / W];
             const uint32_t lane = m_laneOf[i] % W;
             Manifold& m = *manifolds[i];
-            for (int k = 0; k < c.pointCount; ++k)
-                m.points[c.order[k]].normalImpulse =
+            for (int k = 0; k < m.pointCount; ++k)
+                m.points[m_order[i][static_cast<size_t>(k)]].normalImpulse =
                     store.points[batch.firstPoint + static_cast<uint32_t>(k)].impulse.v[lane];
+            const auto tangent = [&](int t) {
+                return Vec3(batch.tangent[t][0].v[lane], batch.tangent[t][1].v[lane], batch.tangent[t][2].v[lane]);
+            };
             m.frictionImpulse =
-                batch.frictionImpulse[0].v[lane] * c.tangent[0] + batch.frictionImpulse[1].v[lane] * c.tangent[1];
+                batch.frictionImpulse[0].v[lane] * tangent(0) + batch.frictionImpulse[1].v[lane] * tangent(1);
             m.twistImpulse = batch.twistImpulse.v[lane];
         }
     });

@@ -5,6 +5,7 @@
 #include "collision/Manifold.h"
 #include "math/Types.h"
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -211,10 +212,15 @@ public:
     // For tests, which compare the two widths; it applies to the next prepare().
     static void setWidestLanes(int lanes) { s_widestLanes = lanes; }
 
+    // The whole constraint records, in manifold order, with the impulses of the last sweep. prepare() keeps them only
+    // when asked to (keepConstraints()) or when restitution is on (its pass reads them); else this is empty. The
+    // sequential sweeps and the restitution pass work on these records.
     const std::vector<ContactConstraint>& constraints() const {
         syncFromBatches();
         return m_constraints;
     }
+    // For tests: keep the records at every prepare() from now on (the sequential sweeps need them).
+    void keepConstraints(bool keep) { m_keepConstraints = keep; }
     const ContactSolverCounters& counters() const { return m_counters; }
     void resetCounters() { m_counters = {}; }
 
@@ -266,8 +272,17 @@ private:
         uint32_t first, lanes, firstPoint, pointCount;
     };
 
+    // prepare()'s inputs, for the set-up in buildBatches().
+    struct SetUpInputs {
+        std::span<Manifold* const> manifolds;
+        std::span<const uint32_t> indexA, indexB;
+        std::span<const Real> friction, restitution;
+        std::span<const SolverBody> bodies;
+        std::span<const Vec3> centers;
+        std::span<const Hold> held;
+    };
     template <int W>
-    void buildBatches(BatchStore<W>& store, const ParallelFor& parallelFor);
+    void buildBatches(BatchStore<W>& store, const SetUpInputs& inputs, const ParallelFor& parallelFor);
     template <int W>
     void syncFromBatches(const BatchStore<W>& store) const;
     template <int W>
@@ -283,17 +298,22 @@ private:
     template <int W>
     void solveBatches(BatchStore<W>& store, std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
     size_t batchCount() const { return m_width == 8 ? m_store8.batches.size() : m_store4.batches.size(); }
-    void buildBatches(const ParallelFor& parallelFor);
+    void buildBatches(const SetUpInputs& inputs, const ParallelFor& parallelFor);
     // Copies the batches' impulses and impact records back to m_constraints, if a batched sweep ran since.
     void syncFromBatches() const;
-    void scheduleLevels(size_t bodyCount, std::span<const uint8_t> bodyPart);
+    void scheduleLevels(size_t bodyCount, std::span<const uint8_t> bodyPart, std::span<const uint32_t> bodyA,
+                        std::span<const uint32_t> bodyB);
     void warmStartOne(std::span<SolverBody> bodies, const ContactConstraint& c);
     void solveOne(std::span<SolverBody> bodies, ContactConstraint& c, bool useBias);
 
-    mutable std::vector<ContactConstraint> m_constraints;
-    std::vector<uint8_t> m_batchKey;        // per constraint: its group within its level (buildBatches())
-    std::vector<BatchLayout> m_batchLayout; // per batch (buildBatches())
-    std::vector<uint32_t> m_laneOf;         // per constraint: its batch times the lane width, plus its lane
+    size_t m_count = 0;                                   // constraints (one per manifold) of the last prepare()
+    mutable std::vector<ContactConstraint> m_constraints; // empty unless m_kept
+    bool m_kept = false;                                  // prepare() filled m_constraints
+    bool m_keepConstraints = false;                       // keepConstraints()
+    std::vector<std::array<uint8_t, 4>> m_order;          // per constraint: its ContactConstraint::order
+    std::vector<uint8_t> m_batchKey;                      // per constraint: its group within its level (buildBatches())
+    std::vector<BatchLayout> m_batchLayout;               // per batch (buildBatches())
+    std::vector<uint32_t> m_laneOf;     // per constraint: its batch times the lane width, plus its lane
     std::vector<uint32_t> m_solveOrder; // constraint indices, level by level (grouped within a level: buildBatches())
     std::vector<uint8_t> m_segment;     // per constraint: its part, or kBoundarySegment
     size_t m_segmentLevelStart[kParts + 2] = {};

@@ -115,15 +115,17 @@ Problem makeProblem(int bodyCount, int count, bool chain, unsigned seed) {
     return p;
 }
 
-void prepare(ContactSolver& solver, const Problem& p, std::span<const uint8_t> parts = {}) {
+void prepare(ContactSolver& solver, const Problem& p, std::span<const uint8_t> parts = {}, bool restitution = true,
+             const ContactSolver::ParallelFor& parallelFor = {}) {
     ContactSolverSettings settings;
     settings.contactHertz = 120.0;
+    settings.restitution = restitution;
     // prepare() reads the manifolds and keeps nothing of them (only storeImpulses(), not called here, writes).
     std::vector<Manifold*> manifolds;
     for (const Manifold& m : p.manifolds)
         manifolds.push_back(const_cast<Manifold*>(&m));
     solver.prepare(manifolds, p.indexA, p.indexB, p.friction, p.restitution, p.bodies, p.centers, 1.0 / 480.0, settings,
-                   parts, {}, p.held);
+                   parts, parallelFor, p.held);
 }
 
 // p's bodies after a warm start and one solve sweep, and a relax sweep if `relax`.
@@ -277,6 +279,7 @@ private slots:
         }
         std::vector<SolverBody> sequential = p.bodies, batched = p.bodies;
         ContactSolver a, b;
+        a.keepConstraints(true); // the sequential sweeps work on the records (restitution, on here, keeps them too)
         prepare(a, p, partSpan);
         prepare(b, p, partSpan);
         int impacts = 0;
@@ -318,6 +321,72 @@ private slots:
         ContactSolver::setWidestLanes(8);
         QVERIFY(pushing > 0);
         QVERIFY(rubbing > 0);
+    }
+
+    // storeImpulses() writes the same impulses to the manifolds whether the solver kept its constraint records or
+    // set the constraints up straight into the batches (restitution off), and however its parallelFor cuts up the
+    // manifolds: the reference is the sequential sweep, stored from the records.
+    void storedImpulsesAreTheSequentialOnes_data() {
+        QTest::addColumn<int>("lanes");
+        QTest::addColumn<bool>("kept");
+        QTest::addColumn<bool>("shared");
+        for (int lanes : {4, 8})
+            for (bool kept : {false, true})
+                for (bool shared : {false, true})
+                    QTest::addRow("%d lanes, records %s, %s", lanes, kept ? "kept" : "not kept",
+                                  shared ? "shared out in three" : "one range")
+                        << lanes << kept << shared;
+    }
+    void storedImpulsesAreTheSequentialOnes() {
+        QFETCH(int, lanes);
+        QFETCH(bool, kept);
+        QFETCH(bool, shared);
+        ContactSolver::setWidestLanes(lanes);
+        Problem p = makeProblem(60, 203, false, 11);
+        holdSome(p);
+        // Three ranges, last first: each manifold must be written alone.
+        const ContactSolver::ParallelFor inThree = [](size_t count, const std::function<void(size_t, size_t)>& body) {
+            for (int part = 2; part >= 0; --part)
+                body(count * static_cast<size_t>(part) / 3, count * static_cast<size_t>(part + 1) / 3);
+        };
+        const auto pointers = [](std::vector<Manifold>& manifolds) {
+            std::vector<Manifold*> out;
+            for (Manifold& m : manifolds)
+                out.push_back(&m);
+            return out;
+        };
+
+        ContactSolver reference;
+        reference.keepConstraints(true);
+        prepare(reference, p, {}, false);
+        std::vector<SolverBody> sequential = p.bodies;
+        ContactSolver solver;
+        solver.keepConstraints(kept);
+        prepare(solver, p, {}, false, shared ? inThree : ContactSolver::ParallelFor());
+        QCOMPARE(solver.constraints().size(), kept ? p.manifolds.size() : size_t(0));
+        std::vector<SolverBody> batched = p.bodies;
+        for (int substep = 0; substep < 2; ++substep) {
+            reference.warmStartSequential(sequential);
+            reference.solveSequential(sequential, true);
+            reference.solveSequential(sequential, false);
+            solver.warmStart(batched);
+            solver.solve(batched, true);
+            solver.solve(batched, false);
+        }
+        std::vector<Manifold> expected = p.manifolds, stored = p.manifolds;
+        reference.storeImpulses(pointers(expected));
+        solver.storeImpulses(pointers(stored), shared ? inThree : ContactSolver::ParallelFor());
+        int changed = 0;
+        for (size_t i = 0; i < p.manifolds.size(); ++i) {
+            QCOMPARE(stored[i].frictionImpulse, expected[i].frictionImpulse);
+            QCOMPARE(stored[i].twistImpulse, expected[i].twistImpulse);
+            for (int k = 0; k < p.manifolds[i].pointCount; ++k) {
+                QCOMPARE(stored[i].points[k].normalImpulse, expected[i].points[k].normalImpulse);
+                changed += stored[i].points[k].normalImpulse != p.manifolds[i].points[k].normalImpulse ? 1 : 0;
+            }
+        }
+        ContactSolver::setWidestLanes(8);
+        QVERIFY(changed > 100); // the sweeps changed most points' impulses (203 manifolds, 507 points)
     }
 
     // A constraint that holds one side reads that body's velocity but never moves it (to the bit), so the other body
@@ -374,6 +443,7 @@ private slots:
         const std::span<const uint8_t> partSpan = parts ? std::span<const uint8_t>(part) : std::span<const uint8_t>();
         std::vector<SolverBody> one = p.bodies, two = p.bodies;
         ContactSolver a, b;
+        a.keepConstraints(true); // the sequential sweeps work on the records (restitution, on here, keeps them too)
         prepare(a, p, partSpan);
         prepare(b, p, partSpan);
         for (int substep = 0; substep < 4; ++substep) {

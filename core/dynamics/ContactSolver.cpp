@@ -99,15 +99,6 @@ inline void applyRowT(SolverBody& a, SolverBody& b, const Inverse& ia, const Inv
     }
 }
 
-// body over [0, count): shared out by parallelFor if there is one, else in one call on this thread.
-void shareOut(const ContactSolver::ParallelFor& parallelFor, size_t count,
-              const std::function<void(size_t, size_t)>& body) {
-    if (parallelFor)
-        parallelFor(count, body);
-    else
-        body(0, count);
-}
-
 // One manifold's constraint, for one step (see prepare()).
 void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, uint32_t indexB, Real friction,
                      Real restitution, ContactSolver::Hold held, std::span<const SolverBody> bodies,
@@ -219,6 +210,14 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
 }
 
 } // namespace
+
+void shareOut(const ContactSolver::ParallelFor& parallelFor, size_t count,
+              const std::function<void(size_t, size_t)>& body) {
+    if (parallelFor)
+        parallelFor(count, body);
+    else
+        body(0, count);
+}
 
 Softness softness(Real omega, Real zeta, Real h) {
     // Soft constraint as an implicit-Euler damped spring (Catto, "Solver2D", 2024): with a1 = 2 zeta + h omega,

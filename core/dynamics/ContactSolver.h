@@ -332,6 +332,10 @@ private:
     ContactSolverCounters m_sweepRows; // rows of one sweep over every constraint
 };
 
+// body over [0, count): shared out by parallelFor if there is one, else in one call on this thread.
+void shareOut(const ContactSolver::ParallelFor& parallelFor, size_t count,
+              const std::function<void(size_t, size_t)>& body);
+
 // Two unit tangents orthogonal to n, chosen deterministically.
 void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2);
 

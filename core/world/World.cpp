@@ -927,29 +927,50 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
     if (mayUseTeam)
         prepareTimer.emplace(m_profile, Stage::PrepareContacts);
 
+    // A big group's set-up is shared out over the team: each body and each contact is set up alone, so the results
+    // are the same. (Done by one thread, the records it wrote were read by the other core's half of the constraint
+    // set-up, which then took twice as long as the writer's half.)
+    ContactSolver::ParallelFor parallelFor;
+    if (mayUseTeam && group.size() >= kMinBodiesForTeam)
+        parallelFor = teamParallelFor();
+
     // Solver bodies: entry 0 stands for every immovable body (anchors and sleepers); the group's bodies follow.
     std::vector<SolverBody>& bodies = scratch.solverBodies;
-    bodies.assign(group.size() + 1, SolverBody{});
-    scratch.centers.assign(group.size() + 1, Vec3(0.0));
-    for (size_t k = 0; k < group.size(); ++k) {
-        const uint32_t i = group[k];
-        m_solverIndex[i] = static_cast<uint32_t>(k + 1);
-        SolverBody& b = bodies[k + 1];
-        b.invMass = m_state.invMass[i];
-        // Linear-only mode: the solver must not spin bodies either.
-        b.invInertia = rotation ? m_state.worldInverseInertia(i) : Mat3(0.0);
-        scratch.centers[k + 1] = m_state.position[i];
-    }
-    for (uint32_t slot : scratch.activeContacts) {
-        Contact& contact = m_contactPool[slot];
-        scratch.manifolds.push_back(&contact.manifold);
-        // Sleepers and anchors have solver index 0; so does a moving body of another group, which cannot touch.
-        scratch.indexA.push_back(m_solverIndex[contact.bodyA]);
-        scratch.indexB.push_back(m_solverIndex[contact.bodyB]);
-        scratch.friction.push_back(contact.friction);
-        scratch.restitution.push_back(contact.restitution);
-        scratch.held.push_back(m_anyHeight ? contactHold(contact) : ContactSolver::Hold{});
-    }
+    bodies.resize(group.size() + 1);
+    bodies[0] = SolverBody{};
+    scratch.centers.resize(group.size() + 1);
+    scratch.centers[0] = Vec3(0.0);
+    shareOut(parallelFor, group.size(), [&](size_t first, size_t last) {
+        for (size_t k = first; k < last; ++k) {
+            const uint32_t i = group[k];
+            m_solverIndex[i] = static_cast<uint32_t>(k + 1);
+            SolverBody& b = bodies[k + 1];
+            b = SolverBody{};
+            b.invMass = m_state.invMass[i];
+            // Linear-only mode: the solver must not spin bodies either.
+            b.invInertia = rotation ? m_state.worldInverseInertia(i) : Mat3(0.0);
+            scratch.centers[k + 1] = m_state.position[i];
+        }
+    });
+    const size_t contactCount = scratch.activeContacts.size();
+    scratch.manifolds.resize(contactCount);
+    scratch.indexA.resize(contactCount);
+    scratch.indexB.resize(contactCount);
+    scratch.friction.resize(contactCount);
+    scratch.restitution.resize(contactCount);
+    scratch.held.resize(contactCount);
+    shareOut(parallelFor, contactCount, [&](size_t first, size_t last) {
+        for (size_t k = first; k < last; ++k) {
+            Contact& contact = m_contactPool[scratch.activeContacts[k]];
+            scratch.manifolds[k] = &contact.manifold;
+            // Sleepers and anchors have solver index 0; so does a moving body of another group, which cannot touch.
+            scratch.indexA[k] = m_solverIndex[contact.bodyA];
+            scratch.indexB[k] = m_solverIndex[contact.bodyB];
+            scratch.friction[k] = contact.friction;
+            scratch.restitution[k] = contact.restitution;
+            scratch.held[k] = m_anyHeight ? contactHold(contact) : ContactSolver::Hold{};
+        }
+    });
 
     // The substeps integrate a copy of the group's bodies (group[k] is local body k), written back after them.
     BodyState& local = scratch.local;
@@ -980,10 +1001,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
     ContactSolver& solver = scratch.solver;
     solver.resetCounters();
     cutIslands(scratch);
-    // A big group's constraints are set up by the whole team (each one alone, so the results are the same).
-    ContactSolver::ParallelFor parallelFor;
-    if (mayUseTeam && group.size() >= kMinBodiesForTeam)
-        parallelFor = teamParallelFor();
+    // A big group's constraints are set up by the whole team too (each one alone).
     solver.prepare(scratch.manifolds, scratch.indexA, scratch.indexB, scratch.friction, scratch.restitution, bodies,
                    scratch.centers, h, settings,
                    scratch.islandsCut > 0 ? std::span<const uint8_t>(scratch.part) : std::span<const uint8_t>(),

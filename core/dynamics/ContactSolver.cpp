@@ -241,8 +241,9 @@ void ContactSolver::prepare(std::span<Manifold* const> manifolds, std::span<cons
 
     m_count = manifolds.size();
     // The constraints are set up straight into the batches (buildBatches()); the whole records are kept as well only
-    // where something reads them after prepare(). Written in manifold order and read back level by level, 620 bytes
-    // each, they took a third of large_pyramid's prepare_contacts.
+    // where something reads them after prepare(). Written in manifold order by a pass of their own, 620 bytes each,
+    // and read back level by level, they cost that pass alone 1.8-1.9 ms of the 4.9 ms a step of large_pyramid's
+    // prepare_contacts on one thread (its first 120 frames, 2026-11-27).
     m_kept = m_keepConstraints || settings.restitution;
     m_constraints.resize(m_kept ? m_count : 0);
     scheduleLevels(bodies.size(), bodyPart, solverIndexA, solverIndexB);

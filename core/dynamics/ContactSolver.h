@@ -299,7 +299,8 @@ private:
     void solveBatches(BatchStore<W>& store, std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
     size_t batchCount() const { return m_width == 8 ? m_store8.batches.size() : m_store4.batches.size(); }
     void buildBatches(const SetUpInputs& inputs, const ParallelFor& parallelFor);
-    // Copies the batches' impulses and impact records back to m_constraints, if a batched sweep ran since.
+    // Copies the batches' impulses and impact records back to m_constraints, if a batched sweep ran since and the
+    // records are kept (m_kept).
     void syncFromBatches() const;
     void scheduleLevels(size_t bodyCount, std::span<const uint8_t> bodyPart, std::span<const uint32_t> bodyA,
                         std::span<const uint32_t> bodyB);

@@ -1216,11 +1216,13 @@ void World::continuousCollision() {
             const uint32_t j = m_broadPhase.tree(ProxyKind::Static).userId(proxy);
             const Transform xfB = transform(j);
             // Already close at the start: the speculative contact and the solver own this pair.
-            if (signedDistance(m_shapes[i], poseAt(0.0), m_shapes[j], xfB).separation < 2.0 * target)
+            Real d = signedDistance(m_shapes[i], poseAt(0.0), m_shapes[j], xfB).separation;
+            if (d < 2.0 * target)
                 return true;
             Real t = 0.0;
             for (int iteration = 0; iteration < 40 && t < toi; ++iteration) {
-                const Real d = signedDistance(m_shapes[i], poseAt(t), m_shapes[j], xfB).separation;
+                if (iteration > 0) // the first is the distance at the start, just taken
+                    d = signedDistance(m_shapes[i], poseAt(t), m_shapes[j], xfB).separation;
                 if (d < target) {
                     toi = std::min(toi, t);
                     break;
@@ -1237,14 +1239,18 @@ void World::continuousCollision() {
             ++counts.hits;
         }
     };
+    // The members claim the bodies in chunks as they go: the bodies that need a sweep cluster (the ones falling
+    // fastest), so even halves of the bodies left one member with most of the sweeps.
     const size_t n = m_state.size();
     const int members = m_team && n >= kMinBodiesForTeam ? m_team->size() : 1;
     std::vector<Counts> counts(static_cast<size_t>(members));
+    constexpr size_t kChunk = 32;
+    std::atomic<size_t> claimed{0};
     const auto job = [&](int member) {
-        const auto [begin, end] = ThreadTeam::share(0, n, member, members);
-        for (size_t k = begin; k < end; ++k)
-            if (m_state.isMoving(static_cast<uint32_t>(k)))
-                sweepBody(static_cast<uint32_t>(k), counts[static_cast<size_t>(member)]);
+        for (size_t begin; (begin = claimed.fetch_add(kChunk)) < n;)
+            for (size_t k = begin; k < std::min(n, begin + kChunk); ++k)
+                if (m_state.isMoving(static_cast<uint32_t>(k)))
+                    sweepBody(static_cast<uint32_t>(k), counts[static_cast<size_t>(member)]);
     };
     if (members > 1)
         m_team->run(job);

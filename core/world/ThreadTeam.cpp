@@ -18,9 +18,13 @@ inline void cpuRelax() {
 #endif
 }
 
-// The solve meets at a barrier every few microseconds, so a member spins this long before it sleeps; between the
-// world's steps the workers go to sleep after it.
-constexpr int kSpins = 4000;
+// A member spins this long (some 300 us on this project's machines) before it sleeps on a futex. Waking a sleeping
+// worker took 68 us on those virtual machines once it had slept 300 us or more, against under 1 us while it spins
+// (2026-11-27), and a step has serial stretches of 100-300 us (the pair lists) between its team jobs. With 4,000
+// spins (60-100 us) the worker slept through them: ramps' step on two threads took 1.54-1.68 ms, with 20,000 spins
+// 1.50-1.52 ms (boxes1000 3.52-3.59 and 3.41-3.44 ms; three interleaved runs of 120 frames). Between steps the
+// workers still go to sleep after it.
+constexpr int kSpins = 20000;
 
 } // namespace
 

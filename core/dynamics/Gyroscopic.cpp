@@ -1,23 +1,11 @@
 #include "dynamics/Gyroscopic.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rl {
 
 namespace {
-
-Mat3 skew(const Vec3& v) {
-    // glm is column-major: m[c][r]. skew(v) * x == cross(v, x).
-    return Mat3(Vec3(0.0, v.z, -v.y), Vec3(-v.z, 0.0, v.x), Vec3(v.y, -v.x, 0.0));
-}
-
-Mat3 diagonal(const Vec3& d) {
-    Mat3 m(0.0);
-    m[0][0] = d.x;
-    m[1][1] = d.y;
-    m[2][2] = d.z;
-    return m;
-}
 
 Quat halfRate(const Quat& q, const Vec3& bodyOmega) {
     return 0.5 * (q * Quat(0.0, bodyOmega.x, bodyOmega.y, bodyOmega.z));
@@ -26,14 +14,21 @@ Quat halfRate(const Quat& q, const Vec3& bodyOmega) {
 // One Newton iteration on f(w) = I (w - w0) + h w x (I w) = 0 from the current guess w; returns |update|.
 // J = I + h (skew(w) I - skew(I w)) is I plus a term of order h |w| I, so it is far from singular for any step the
 // clamp allows; a singular or non-finite J (only from non-finite input) leaves w as it is.
+// J is solved by its adjugate: with rows r0, r1, r2, J^-1 has the columns r1 x r2, r2 x r0, r0 x r1 over
+// det J = r0 . (r1 x r2). Written out, J's off-diagonal entries are h w_k (I_a - I_b); glm's general inverse and
+// determinant took twice the arithmetic.
 Real backwardEulerNewtonStep(const Vec3& w0, Vec3& w, const Vec3& inertia, Real h) {
     const Vec3 momentum = inertia * w;
     const Vec3 residual = inertia * (w - w0) + h * glm::cross(w, momentum);
-    const Mat3 jacobian = diagonal(inertia) + h * (skew(w) * diagonal(inertia) - skew(momentum));
-    const Real det = glm::determinant(jacobian);
+    const Vec3 hw = h * w;
+    const Vec3 r0(inertia.x, hw.z * (inertia.z - inertia.y), hw.y * (inertia.z - inertia.y));
+    const Vec3 r1(hw.z * (inertia.x - inertia.z), inertia.y, hw.x * (inertia.x - inertia.z));
+    const Vec3 r2(hw.y * (inertia.y - inertia.x), hw.x * (inertia.y - inertia.x), inertia.z);
+    const Vec3 c0 = glm::cross(r1, r2);
+    const Real det = glm::dot(r0, c0);
     if (!std::isfinite(det) || std::abs(det) < 1e-300)
         return 0.0;
-    const Vec3 update = glm::inverse(jacobian) * residual;
+    const Vec3 update = (c0 * residual.x + glm::cross(r2, r0) * residual.y + glm::cross(r0, r1) * residual.z) / det;
     w -= update;
     return glm::length(update);
 }
@@ -55,10 +50,21 @@ Vec3 gyroscopicImplicit(const Vec3& bodyOmega, const Vec3& inertia, Real dt) {
 }
 
 Vec3 gyroscopicMidpoint(const Vec3& bodyOmega, const Vec3& inertia, Real dt) {
+    // Newton's next update is about g |update|^2 / |w| with g = h |w| (largest / smallest moment): the curvature of
+    // f over its slope. Once that is below 1e-15 |w|, a tenth of the tolerance, the iteration stops without taking
+    // it. (Before, it always ran one more iteration to see a change below 1e-14: over boxes1000's first 120 frames,
+    // 720,000 calls made 1.58 M Newton steps, 295,000 of them ran three; measured updates fell as 7.5e-5, 5.7e-13,
+    // 3.8e-17 of |w| at h |w| = 1.5e-3.)
+    const Real h = 0.5 * dt;
+    const Real anisotropy = std::max({inertia.x, inertia.y, inertia.z}) / std::min({inertia.x, inertia.y, inertia.z});
     Vec3 mid = bodyOmega;
     for (int k = 0; k < kMidpointMaxIterations; ++k) {
-        const Real change = backwardEulerNewtonStep(bodyOmega, mid, inertia, 0.5 * dt);
-        if (!(change > 1e-14 * glm::length(mid)))
+        const Real change = backwardEulerNewtonStep(bodyOmega, mid, inertia, h);
+        const Real size = glm::length(mid);
+        if (!(change > 1e-14 * size))
+            break;
+        const Real relative = change / size;
+        if (h * size * anisotropy * relative * relative <= 1e-15)
             break;
     }
     return 2.0 * mid - bodyOmega;

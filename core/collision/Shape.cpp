@@ -199,14 +199,8 @@ Aabb Shape::localBounds() const {
         return {Vec3(-radius), Vec3(radius)};
     case ShapeKind::Box:
         return {-halfExtents, halfExtents};
-    case ShapeKind::Polyhedron: {
-        Aabb box{polyhedron->vertices[0], polyhedron->vertices[0]};
-        for (const Vec3& v : polyhedron->vertices) {
-            box.min = glm::min(box.min, v);
-            box.max = glm::max(box.max, v);
-        }
-        return box;
-    }
+    case ShapeKind::Polyhedron:
+        return polyhedron->bounds;
     }
     return {};
 }
@@ -293,6 +287,11 @@ Result<Shape> makeHull(const ConvexHull& hull) {
         poly->centroid += v;
     }
     poly->centroid /= Real(poly->vertices.size());
+    poly->bounds = {poly->vertices[0], poly->vertices[0]};
+    for (const Vec3& v : poly->vertices) {
+        poly->bounds.min = glm::min(poly->bounds.min, v);
+        poly->bounds.max = glm::max(poly->bounds.max, v);
+    }
 
     std::vector<HullFace> faces = hull.faces;
     if (poly->flat && faces.size() == 1) {

@@ -55,6 +55,8 @@ struct ConvexPolyhedron {
     std::vector<uint32_t> neighbourStart; // vertices.size() + 1 entries
     std::vector<uint32_t> neighbours;
     Vec3 centroid{0.0}; // vertex mean: an interior point (for flat shapes, a point of the polygon)
+    // The vertices' bounding box, taken once: the SAT asks for the shapes' smallest widths on every call.
+    Aabb bounds;
     bool flat = false;
 
     // Set when the polyhedron is a rectangular box: 8 vertices, 6 faces in three pairs of opposite faces at right

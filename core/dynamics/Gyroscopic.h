@@ -25,8 +25,9 @@ Vec3 gyroscopicExplicit(const Vec3& bodyOmega, const Vec3& inertia, Real dt);
 Vec3 gyroscopicImplicit(const Vec3& bodyOmega, const Vec3& inertia, Real dt);
 
 // Implicit midpoint on Euler's equations: I (w1 - w0) = -dt wm x (I wm), wm = (w0 + w1) / 2. Solved as backward Euler
-// over dt/2 for wm (the same Newton iteration as above, repeated until the update is below 1e-14 of |w|, at most
-// kMidpointMaxIterations times), then w1 = 2 wm - w0. Implicit midpoint keeps every quadratic invariant, here |L|^2 and
+// over dt/2 for wm (the same Newton iteration as above, repeated until the update, or the next one as Newton's
+// quadratic convergence predicts it, is below 1e-14 of |w|, at most kMidpointMaxIterations times), then
+// w1 = 2 wm - w0. Implicit midpoint keeps every quadratic invariant, here |L|^2 and
 // the energy, exactly up to the Newton tolerance: dotting the equation with I wm gives |L1| = |L0|, with wm gives
 // E1 = E0. So it is stable at any step like Catto's step, without its dissipation, and second order.
 // Used by symplectic-euler.

@@ -18,12 +18,12 @@ inline void cpuRelax() {
 #endif
 }
 
-// A member spins this long (some 300 us on this project's machines) before it sleeps on a futex. Waking a sleeping
-// worker took 68 us on those virtual machines once it had slept 300 us or more, against under 1 us while it spins
-// (2026-11-27), and a step has serial stretches of 100-300 us (the pair lists) between its team jobs. With 4,000
-// spins (60-100 us) the worker slept through them: ramps' step on two threads took 1.54-1.68 ms, with 20,000 spins
-// 1.50-1.52 ms (boxes1000 3.52-3.59 and 3.41-3.44 ms; three interleaved runs of 120 frames). Between steps the
-// workers still go to sleep after it.
+// A member spins this long (300-500 us on this project's machines) before it sleeps on a futex. On those virtual
+// machines run() took a median 68 us to get a sleeping worker going after a pause of 300 us or more, 8 us after
+// 100-200 us, and under 1 us while it still spun (2026-11-27). A step has serial stretches of 100-300 us (the pair
+// lists) between its team jobs, and with 4,000 spins (60-100 us) the worker slept through them: ramps' step on two
+// threads took 1.54-1.68 ms, with 20,000 spins 1.50-1.52 ms (boxes1000 3.52-3.59 and 3.41-3.44 ms; three
+// interleaved runs of 120 frames). Between steps the workers still go to sleep after it.
 constexpr int kSpins = 20000;
 
 } // namespace

@@ -210,11 +210,13 @@ private:
         std::vector<uint32_t> activeContacts, indexA, indexB; // pool slots of the group's contacts; solver indices
         std::vector<Manifold*> manifolds;                     // the group's contacts' manifolds, in m_contactPool
         std::vector<Real> friction, restitution;
-        std::vector<ContactSolver::Hold> held; // per contact: its hold for shock propagation (contactHold())
-        std::vector<ClampCounters> clamps;     // per member of the team
-        BodyState local;                       // the group's bodies through the substeps (solveSubsteps())
-        std::vector<uint32_t> localIds;        // 0 .. bodies.size() - 1
-        std::vector<Vec3> startPosition;       // local bodies at the step start
+        std::vector<ContactSolver::Hold> held;     // per contact: its hold for shock propagation (contactHold())
+        std::vector<ClampCounters> clamps;         // per member of the team
+        BodyState local;                           // the group's bodies through the substeps (solveSubsteps())
+        std::vector<uint32_t> localIds;            // 0 .. bodies.size() - 1
+        std::vector<size_t> ownedStart;            // the local bodies member m integrates: [ownedStart[m], [m + 1])
+        std::vector<uint32_t> renumber, reordered; // numberByParts()
+        std::vector<Vec3> startPosition;           // local bodies at the step start
         std::vector<Quat> startOrientation;
         std::vector<uint8_t> part;        // per solver body: its part (cutIslands())
         size_t islandsCut = 0;            // islands of the group cut in parts
@@ -240,6 +242,9 @@ private:
     // Fills scratch.part for its bodies (solver indices and contacts set): each island of cutIslandBodies or more is
     // cut in two halves of its bodies, the other islands go whole to the part with fewer bodies.
     void cutIslands(SolveScratch& scratch) const;
+    // After cutIslands(): numbers the group's bodies part by part (scratch.bodies, m_solverIndex, the contacts'
+    // solver indices and scratch.part follow).
+    void numberByParts(SolveScratch& scratch);
     // A group is solved by the whole team only from this many bodies on, and with at least this many constraints
     // per level of the solver's schedule on average (ramps.obj's pile: 37; the 5,050-cube pyramid: 25).
     static constexpr size_t kMinBodiesForTeam = 128;

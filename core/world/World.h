@@ -214,7 +214,7 @@ private:
         std::vector<ClampCounters> clamps;         // per member of the team
         BodyState local;                           // the group's bodies through the substeps (solveSubsteps())
         std::vector<uint32_t> localIds;            // 0 .. bodies.size() - 1
-        std::vector<size_t> ownedStart;            // the local bodies member m integrates: [ownedStart[m], [m + 1])
+        std::vector<size_t> ownedStart;            // member m integrates local bodies ownedStart[m] .. [m + 1] - 1
         std::vector<uint32_t> renumber, reordered; // numberByParts()
         std::vector<Vec3> startPosition;           // local bodies at the step start
         std::vector<Quat> startOrientation;

@@ -949,10 +949,7 @@ void World::numberByParts(SolveScratch& scratch) {
         index = renumber[index];
     for (uint32_t& index : scratch.indexB)
         index = renumber[index];
-    std::vector<uint8_t>& part = scratch.part;
-    const size_t firstPart = static_cast<size_t>(std::count(part.begin() + 1, part.end(), uint8_t(0)));
-    std::fill(part.begin() + 1, part.begin() + 1 + static_cast<std::ptrdiff_t>(firstPart), uint8_t(0));
-    std::fill(part.begin() + 1 + static_cast<std::ptrdiff_t>(firstPart), part.end(), uint8_t(1));
+    std::sort(scratch.part.begin() + 1, scratch.part.end()); // the new numbering is part by part
 }
 
 void World::SolveScratch::clearContacts() {

@@ -436,104 +436,132 @@ void World::narrowphase() {
     // went from 368-394 ms to 297-308 ms over the first 240 frames, three interleaved runs, with the same frames.)
     // The clip's speculative separations are lower bounds of the distance, so it could keep a point for a pair that
     // cannot touch within the step; this test drops such points (27 times in 600 frames of a 1,000-box pile).
-    std::vector<uint32_t>& active = m_narrowActive;
-    std::vector<Real>& margins = m_narrowMargins;
-    active.clear();
-    margins.clear();
     const Real dt = 1.0 / m_fps;
-    for (size_t i = 0; i < m_pairContacts.size(); ++i) {
-        const auto [a, b] = m_pairBodies[i];
-        if (!m_state.isMoving(a) && !m_state.isMoving(b))
-            continue;
-        const Aabb &boxA = m_bounds[a], &boxB = m_bounds[b];
-        const Vec3 gap = glm::max(boxB.min - boxA.max, boxA.min - boxB.max);
-        const Real apart = std::max({gap.x, gap.y, gap.z});
-        // Most pairs are told apart by a bound of the margin from each body's own speed (|vB - vA| <= |vA| + |vB|;
-        // the factor covers rounding), which costs no square root; the rest by the margin itself.
-        const Real bound = std::min(m_tuning.speculativeDistance + (m_reach[a] + m_reach[b]) * dt,
-                                    m_tuning.speculativeDistance + std::max(m_minExtent[a], m_minExtent[b]));
-        Real margin = 0.0;
-        if (apart > bound * (1.0 + 1e-9) || apart > (margin = pairMargin(a, b))) {
-            const uint32_t slot = m_pairContacts[i];
-            if (m_contactTouching[slot]) {
-                Contact& c = m_contactPool[slot];
-                c.manifold.pointCount = 0;
-                c.cachedMargin = -1.0;
-                m_contactTouching[slot] = 0;
-            }
-            continue;
-        }
-        active.push_back(m_pairContacts[i]);
-        margins.push_back(margin);
-    }
-    m_profile.count(Counter::PairsTested, active.size());
-
-    // The contacts sit in the pool in no useful order for the cache (about 700 bytes each, some 6,000 pairs in
-    // ramps.obj): a few pairs ahead, every line of the next contact is fetched while this one is computed. (Over
-    // ramps.obj's first 240 frames the stage went from 389-429 ms to 335-410 ms, in seven interleaved pairs.)
-    constexpr size_t kAhead = 4;
-    const auto collideRange = [&](size_t begin, size_t end) {
+    // Filters pairs [begin, end) and collides those that pass; returns how many were tested.
+    const auto collideChunk = [&](size_t begin, size_t end) {
+        uint32_t active[kNarrowChunk];
+        Real margins[kNarrowChunk];
+        size_t tested = 0;
         for (size_t i = begin; i < end; ++i) {
-            if (i + kAhead < end) {
-                const char* ahead = reinterpret_cast<const char*>(&m_contactPool[active[i + kAhead]]);
+            const auto [a, b] = m_pairBodies[i];
+            if (!m_state.isMoving(a) && !m_state.isMoving(b))
+                continue;
+            const Aabb &boxA = m_bounds[a], &boxB = m_bounds[b];
+            const Vec3 gap = glm::max(boxB.min - boxA.max, boxA.min - boxB.max);
+            const Real apart = std::max({gap.x, gap.y, gap.z});
+            // Most pairs are told apart by a bound of the margin from each body's own speed (|vB - vA| <= |vA| +
+            // |vB|; the factor covers rounding), which costs no square root; the rest by the margin itself.
+            const Real bound = std::min(m_tuning.speculativeDistance + (m_reach[a] + m_reach[b]) * dt,
+                                        m_tuning.speculativeDistance + std::max(m_minExtent[a], m_minExtent[b]));
+            Real margin = 0.0;
+            if (apart > bound * (1.0 + 1e-9) || apart > (margin = pairMargin(a, b))) {
+                const uint32_t slot = m_pairContacts[i];
+                if (m_contactTouching[slot]) {
+                    Contact& c = m_contactPool[slot];
+                    c.manifold.pointCount = 0;
+                    c.cachedMargin = -1.0;
+                    m_contactTouching[slot] = 0;
+                }
+                continue;
+            }
+            active[tested] = m_pairContacts[i];
+            margins[tested] = margin;
+            ++tested;
+        }
+        // The contacts sit in the pool in no useful order for the cache (about 700 bytes each, some 6,000 pairs in
+        // ramps.obj): a few pairs ahead, every line of the next contact is fetched while this one is computed.
+        // (Over ramps.obj's first 240 frames the stage went from 389-429 ms to 335-410 ms, in seven interleaved
+        // pairs.)
+        constexpr size_t kAhead = 4;
+        for (size_t k = 0; k < tested; ++k) {
+            if (k + kAhead < tested) {
+                const char* ahead = reinterpret_cast<const char*>(&m_contactPool[active[k + kAhead]]);
                 for (size_t line = 0; line < sizeof(Contact); line += 64)
                     __builtin_prefetch(ahead + line);
             }
-            collidePair(active[i], margins[i]);
+            collidePair(active[k], margins[k]);
         }
+        return tested;
     };
 
-    // Each pair writes only its own contact, so sharing the list out over threads gives identical results. The
-    // members take batches as they go: a full SAT costs many times an early out, and even halves of the list kept
-    // one thread waiting for the other. Batches of 16 made the two members fight over the counter (and over
-    // neighbouring touching flags): in large_pyramid at rest, where most manifolds are reused, the stage took
-    // 1.37 ms a step on two threads against 0.82 ms on one; with 64, 0.80-0.89 ms (2026-11-27, frames 60-120).
+    // Each pair writes only its own contact, so sharing the pairs out over threads gives identical results. The
+    // members take chunks of pairs as they go, filtering and colliding each: a full SAT costs many times an early
+    // out, and even halves of the list kept one thread waiting for the other. (With the filter a serial pass of its
+    // own before the team's collisions, it took 64-98 us of a step on two threads in ramps.obj and boxes1000,
+    // medians of their first 120 frames.) Batches of 16 tested pairs made the two members fight over the counter
+    // (and over neighbouring touching flags): in large_pyramid at rest, where most manifolds are reused, the stage
+    // took 1.37 ms a step on two threads against 0.82 ms on one; with 64, 0.80-0.89 ms (2026-11-27, frames 60-120).
     //
-    // A team of two takes its batches from the two ends of the list: member 0 from the front, member 1 from the
+    // A team of two takes its chunks from the two ends of the list: member 0 from the front, member 1 from the
     // back, until they meet. Each member then mostly reads the contacts whose manifolds it wrote in the last step
     // (the solver's set-up and storeImpulses() share the touching contacts out in halves, in pair order too), which
     // the other core would have to fetch from this one's cache. (large_pyramid, frames 60-120 on two threads, seven
     // interleaved runs: 0.65-0.85 ms a step against 0.62-1.09 ms, medians 0.74 and 0.88; 2026-11-27.)
-    if (m_team && active.size() >= 128) {
-        constexpr size_t kBatch = 64;
-        const size_t batches = (active.size() + kBatch - 1) / kBatch;
-        std::atomic<size_t> claimed{0};
-        const bool fromBothEnds = m_team->size() == 2;
-        m_team->run([&](int member) {
-            // Every claim is one batch. In a team of two, member 0's k-th claim is batch k and member 1's is batch
-            // batches - 1 - k: with fewer claims than batches in all, the two never take the same one.
-            for (size_t mine = 0;; ++mine) {
-                const size_t claim = claimed.fetch_add(1);
-                if (claim >= batches)
-                    break;
-                const size_t batch = !fromBothEnds ? claim : member == 0 ? mine : batches - 1 - mine;
-                collideRange(batch * kBatch, std::min(active.size(), (batch + 1) * kBatch));
-            }
-        });
-    } else {
-        collideRange(0, active.size());
-    }
-
-    // From here on only touching contacts matter: list them once, in pair order.
-    m_touchingContacts.clear();
-    for (uint32_t slot : m_pairContacts)
-        if (m_contactTouching[slot])
-            m_touchingContacts.push_back(slot);
-
-    // A touching contact between an awake body and a sleeping one wakes the sleeper's island.
-    if (m_effects.effects.has(Effect::Sleeping)) {
-        for (uint32_t slot : m_touchingContacts) {
-            const Contact& c = m_contactPool[slot];
-            const bool movingA = m_state.isMoving(c.bodyA), movingB = m_state.isMoving(c.bodyB);
-            if (movingA && !movingB && !m_state.isStatic(c.bodyB))
-                wakeIsland(c.bodyB);
-            else if (movingB && !movingA && !m_state.isStatic(c.bodyA))
-                wakeIsland(c.bodyA);
+    //
+    // Then each member lists the touching contacts of its half of the pairs, in pair order, and the lists are joined.
+    const size_t pairCount = m_pairContacts.size();
+    const int members = m_team && pairCount >= 2 * kNarrowChunk ? m_team->size() : 1;
+    m_narrowLists.resize(static_cast<size_t>(members));
+    const size_t chunks = (pairCount + kNarrowChunk - 1) / kNarrowChunk;
+    std::atomic<size_t> claimed{0};
+    const bool fromBothEnds = members == 2;
+    const auto job = [&](int member) {
+        NarrowList& mine = m_narrowLists[static_cast<size_t>(member)];
+        mine.tested = 0;
+        // Every claim is one chunk. In a team of two, member 0's k-th claim is chunk k and member 1's is chunk
+        // chunks - 1 - k: with fewer claims than chunks in all, the two never take the same one.
+        for (size_t k = 0;; ++k) {
+            const size_t claim = members == 1 ? k : claimed.fetch_add(1, std::memory_order_relaxed);
+            if (claim >= chunks)
+                break;
+            const size_t chunk = !fromBothEnds ? claim : member == 0 ? k : chunks - 1 - k;
+            mine.tested += collideChunk(chunk * kNarrowChunk, std::min(pairCount, (chunk + 1) * kNarrowChunk));
         }
+        if (members > 1)
+            m_team->barrier();
+        // From here on only touching contacts matter: list them once, in pair order. A contact that may wake a
+        // sleeper (below) has a body that is neither moving nor static.
+        mine.touching.clear();
+        mine.mayWake.clear();
+        mine.points = 0;
+        const auto [begin, end] = ThreadTeam::share(0, pairCount, member, members);
+        for (size_t i = begin; i < end; ++i) {
+            const uint32_t slot = m_pairContacts[i];
+            if (!m_contactTouching[slot])
+                continue;
+            mine.touching.push_back(slot);
+            mine.points += static_cast<uint64_t>(m_contactPool[slot].manifold.pointCount);
+            const auto [a, b] = m_pairBodies[i];
+            if ((!m_state.isMoving(a) && !m_state.isStatic(a)) || (!m_state.isMoving(b) && !m_state.isStatic(b)))
+                mine.mayWake.push_back(i);
+        }
+    };
+    if (members > 1)
+        m_team->run(job);
+    else
+        job(0);
+    m_touchingContacts.clear();
+    uint64_t tested = 0, points = 0;
+    for (const NarrowList& list : m_narrowLists) {
+        m_touchingContacts.insert(m_touchingContacts.end(), list.touching.begin(), list.touching.end());
+        tested += list.tested;
+        points += list.points;
     }
-    uint64_t points = 0;
-    for (uint32_t slot : m_touchingContacts)
-        points += static_cast<uint64_t>(m_contactPool[slot].manifold.pointCount);
+    m_profile.count(Counter::PairsTested, tested);
+
+    // A touching contact between an awake body and a sleeping one wakes the sleeper's island, in pair order (a woken
+    // island can wake the next).
+    if (m_effects.effects.has(Effect::Sleeping)) {
+        for (const NarrowList& list : m_narrowLists)
+            for (const size_t i : list.mayWake) {
+                const auto [a, b] = m_pairBodies[i];
+                const bool movingA = m_state.isMoving(a), movingB = m_state.isMoving(b);
+                if (movingA && !movingB && !m_state.isStatic(b))
+                    wakeIsland(b);
+                else if (movingB && !movingA && !m_state.isStatic(a))
+                    wakeIsland(a);
+            }
+    }
     m_profile.count(Counter::Manifolds, m_touchingContacts.size());
     m_profile.count(Counter::ContactPoints, points);
 }

@@ -319,8 +319,16 @@ private:
     // (anchor or sleeper), 1 when it touches one; 0 elsewhere or with no path (see World::heightsAboveSupport()).
     std::vector<uint32_t> m_height;
     bool m_anyHeight = false;
-    std::vector<uint32_t> m_narrowActive, m_solverIndex, m_moving;
-    std::vector<Real> m_narrowMargins;
+    std::vector<uint32_t> m_solverIndex, m_moving;
+    // Per member of the team in narrowphase(): its touching contacts, the pairs whose contact may wake a sleeper
+    // (their index in the pair list), and its counts.
+    struct NarrowList {
+        std::vector<uint32_t> touching;
+        std::vector<size_t> mayWake;
+        uint64_t tested = 0, points = 0;
+    };
+    std::vector<NarrowList> m_narrowLists;
+    static constexpr size_t kNarrowChunk = 128; // pairs per claim of the narrowphase
     SolveScratch m_scratch;
     std::vector<SolveScratch> m_memberScratch; // islands shared out: one part per member of the team
     static constexpr uint32_t kNoMember = 0xffffffffu;

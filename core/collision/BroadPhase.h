@@ -109,7 +109,7 @@ private:
     std::vector<ProxyKey> m_moveBuffer;
     std::vector<std::pair<uint64_t, ProxyKey>> m_sortKeys;
     std::vector<BroadPhasePair> m_candidates;
-    std::vector<std::pair<uint64_t, uint32_t>> m_candidateKeys; // (idA << 32 | idB, position in m_candidates)
+    std::vector<uint32_t> m_firstPair; // per body id: its first pair as idA in m_pairs (updatePairs())
     std::vector<std::vector<BroadPhasePair>> m_chunkCandidates; // per chunk of the move buffer (updatePairs())
     std::vector<BroadPhasePair> m_pairs;
     std::vector<BroadPhasePair> m_added;

@@ -50,9 +50,9 @@ void BodyState::reserve(uint32_t n) {
 namespace {
 
 template <class T>
-void gatherInto(std::vector<T>& to, const std::vector<T>& from, std::span<const uint32_t> ids) {
-    to.resize(ids.size());
-    for (size_t k = 0; k < ids.size(); ++k)
+void gatherInto(std::vector<T>& to, const std::vector<T>& from, std::span<const uint32_t> ids, size_t first,
+                size_t last) {
+    for (size_t k = first; k < last; ++k)
         to[k] = from[ids[k]];
 }
 
@@ -65,21 +65,39 @@ void scatterFrom(const std::vector<T>& from, std::vector<T>& to, std::span<const
 } // namespace
 
 void BodyState::gather(const BodyState& from, std::span<const uint32_t> ids) {
-    gatherInto(position, from.position, ids);
-    gatherInto(orientation, from.orientation, ids);
-    gatherInto(linearVelocity, from.linearVelocity, ids);
-    gatherInto(angularVelocity, from.angularVelocity, ids);
-    gatherInto(invMass, from.invMass, ids);
-    gatherInto(invInertia, from.invInertia, ids);
-    gatherInto(linearDamping, from.linearDamping, ids);
-    gatherInto(angularDamping, from.angularDamping, ids);
-    gatherInto(flags, from.flags, ids);
-    gatherInto(info, from.info, ids);
-    smoothLinearVelocity.resize(ids.size());
-    smoothDisplacement.resize(ids.size());
-    smoothAngularVelocity.resize(ids.size());
-    smoothRotation.resize(ids.size());
+    sizeFor(from, ids.size());
+    gatherRange(from, ids, 0, ids.size());
+}
+
+void BodyState::sizeFor(const BodyState& from, size_t count) {
+    position.resize(count);
+    orientation.resize(count);
+    linearVelocity.resize(count);
+    angularVelocity.resize(count);
+    invMass.resize(count);
+    invInertia.resize(count);
+    linearDamping.resize(count);
+    angularDamping.resize(count);
+    flags.resize(count);
+    info.resize(count);
+    smoothLinearVelocity.resize(count);
+    smoothDisplacement.resize(count);
+    smoothAngularVelocity.resize(count);
+    smoothRotation.resize(count);
     limits = from.limits;
+}
+
+void BodyState::gatherRange(const BodyState& from, std::span<const uint32_t> ids, size_t first, size_t last) {
+    gatherInto(position, from.position, ids, first, last);
+    gatherInto(orientation, from.orientation, ids, first, last);
+    gatherInto(linearVelocity, from.linearVelocity, ids, first, last);
+    gatherInto(angularVelocity, from.angularVelocity, ids, first, last);
+    gatherInto(invMass, from.invMass, ids, first, last);
+    gatherInto(invInertia, from.invInertia, ids, first, last);
+    gatherInto(linearDamping, from.linearDamping, ids, first, last);
+    gatherInto(angularDamping, from.angularDamping, ids, first, last);
+    gatherInto(flags, from.flags, ids, first, last);
+    gatherInto(info, from.info, ids, first, last);
 }
 
 void BodyState::scatterMotion(BodyState& to, std::span<const uint32_t> ids) const {

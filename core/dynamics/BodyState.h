@@ -101,6 +101,10 @@ struct BodyState {
     // integrators read and write (the smooth scratch is sized, not copied). A substep loop then runs over one
     // contiguous run of memory, and threads that take neighbouring runs share no cache line but the one between them.
     void gather(const BodyState& from, std::span<const uint32_t> ids);
+    // The same in two parts, so that threads can share the copying out: sizeFor() sizes this state for `count`
+    // bodies of `from`, then gatherRange() copies bodies ids[first .. last - 1]; ranges may be copied at once.
+    void sizeFor(const BodyState& from, size_t count);
+    void gatherRange(const BodyState& from, std::span<const uint32_t> ids, size_t first, size_t last);
     // Writes the motion (position, orientation and velocities) of bodies 0 .. ids.size() - 1 back to `to`'s bodies
     // ids: the inverse of gather() for what a step changes.
     void scatterMotion(BodyState& to, std::span<const uint32_t> ids) const;

@@ -1033,12 +1033,23 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
     cutIslands(scratch);
     numberByParts(scratch);
 
+    // The substeps integrate a copy of the group's bodies (group[k] is local body k), written back after them; the
+    // solver sweeps its own copy of what it needs (SolverBody). Both are made in one pass, shared out like the rest
+    // of the set-up: each body alone, so the results are the same. (Copied by one thread, the 5,050-cube pyramid's
+    // bodies took 0.3 ms a step of serial work, 2026-11-27.)
     std::vector<SolverBody>& bodies = scratch.solverBodies;
     bodies.resize(group.size() + 1);
     bodies[0] = SolverBody{};
     scratch.centers.resize(group.size() + 1);
     scratch.centers[0] = Vec3(0.0);
+    BodyState& local = scratch.local;
+    local.sizeFor(m_state, group.size());
+    scratch.localIds.resize(group.size());
+    std::iota(scratch.localIds.begin(), scratch.localIds.end(), 0u);
+    scratch.startPosition.resize(group.size());
+    scratch.startOrientation.resize(group.size());
     shareOut(parallelFor, group.size(), [&](size_t first, size_t last) {
+        local.gatherRange(m_state, group, first, last);
         for (size_t k = first; k < last; ++k) {
             const uint32_t i = group[k];
             SolverBody& b = bodies[k + 1];
@@ -1046,17 +1057,14 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
             b.invMass = m_state.invMass[i];
             // Linear-only mode: the solver must not spin bodies either.
             b.invInertia = rotation ? m_state.worldInverseInertia(i) : Mat3(0.0);
+            // prepare() records each point's approach speed for restitution, so it must see the current velocities.
+            b.v = local.linearVelocity[k];
+            b.w = rotation ? local.angularVelocity[k] : Vec3(0.0);
             scratch.centers[k + 1] = m_state.position[i];
+            scratch.startPosition[k] = local.position[k];
+            scratch.startOrientation[k] = local.orientation[k];
         }
     });
-
-    // The substeps integrate a copy of the group's bodies (group[k] is local body k), written back after them.
-    BodyState& local = scratch.local;
-    local.gather(m_state, group);
-    scratch.localIds.resize(group.size());
-    std::iota(scratch.localIds.begin(), scratch.localIds.end(), 0u);
-    scratch.startPosition = local.position;
-    scratch.startOrientation = local.orientation;
     // Velocities between the local bodies and the solver's copy, for the given local bodies.
     const auto toSolver = [&](std::span<const uint32_t> ids) {
         for (const uint32_t k : ids) {
@@ -1072,8 +1080,6 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
         }
     };
     const std::span<const uint32_t> allLocal(scratch.localIds);
-    // prepare() records each point's approach speed for restitution, so it must see the current velocities.
-    toSolver(allLocal);
     ContactSolverSettings settings = m_solverSettings;
     settings.contactHertz = 0.25 * m_fps * substeps; // a quarter of the substep rate (see ContactSolverSettings)
 

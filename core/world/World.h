@@ -230,8 +230,13 @@ private:
             bool whole = false;          // a body is not finite: left uncut
         };
         std::vector<CutIsland> cutIslands;
-        std::vector<uint32_t> boundaryCount; // per cut island, for one axis
-        std::vector<uint32_t> islandOf;      // per root of a cut island: its entry in cutIslands
+        struct AxisCut {                                 // the cut islands split along one axis
+            std::vector<std::pair<Real, uint32_t>> keys; // (coordinate, position in bodies), per entry of cutBodies
+            std::vector<uint8_t> part;                   // per solver body
+            std::vector<uint32_t> boundary;              // per cut island: the constraints across
+        };
+        std::array<AxisCut, 3> axisCuts;
+        std::vector<uint32_t> islandOf; // per root of a cut island: its entry in cutIslands
         void clearContacts();
     };
     // The group of `scratch` through `substeps` substeps, then restitution; on the team when mayUseTeam is set and

@@ -522,6 +522,7 @@ void World::narrowphase() {
         // From here on only touching contacts matter: list them once, in pair order. A contact that may wake a
         // sleeper (below) has a body that is neither moving nor static.
         mine.touching.clear();
+        mine.touchingBodies.clear();
         mine.mayWake.clear();
         mine.points = 0;
         const auto [begin, end] = ThreadTeam::share(0, pairCount, member, members);
@@ -530,6 +531,7 @@ void World::narrowphase() {
             if (!m_contactTouching[slot])
                 continue;
             mine.touching.push_back(slot);
+            mine.touchingBodies.push_back(m_pairBodies[i]);
             mine.points += static_cast<uint64_t>(m_contactPool[slot].manifold.pointCount);
             const auto [a, b] = m_pairBodies[i];
             if ((!m_state.isMoving(a) && !m_state.isStatic(a)) || (!m_state.isMoving(b) && !m_state.isStatic(b)))
@@ -541,9 +543,11 @@ void World::narrowphase() {
     else
         job(0);
     m_touchingContacts.clear();
+    m_touchingBodies.clear();
     uint64_t tested = 0, points = 0;
     for (const NarrowList& list : m_narrowLists) {
         m_touchingContacts.insert(m_touchingContacts.end(), list.touching.begin(), list.touching.end());
+        m_touchingBodies.insert(m_touchingBodies.end(), list.touchingBodies.begin(), list.touchingBodies.end());
         tested += list.tested;
         points += list.points;
     }
@@ -593,11 +597,10 @@ void World::wakeAll() {
 
 void World::buildIslands() {
     std::iota(m_island.begin(), m_island.end(), 0u);
-    for (uint32_t slot : m_touchingContacts) {
-        const Contact& c = m_contactPool[slot];
-        if (m_state.isStatic(c.bodyA) || m_state.isStatic(c.bodyB))
+    for (const auto& [a, b] : m_touchingBodies) {
+        if (m_state.isStatic(a) || m_state.isStatic(b))
             continue; // anchors do not join islands: a floor would glue the whole scene into one
-        unite(m_island, c.bodyA, c.bodyB);
+        unite(m_island, a, b);
     }
     for (uint32_t i = 0; i < m_island.size(); ++i)
         m_island[i] = findRoot(m_island, i);
@@ -638,18 +641,15 @@ void World::heightsAboveSupport(std::span<const uint32_t> moving) {
     for (uint32_t i : moving)
         if (inMixedIsland(i))
             m_height[i] = kUnknown;
-    for (uint32_t slot : m_touchingContacts) {
-        const Contact& c = m_contactPool[slot];
-        if (m_height[c.bodyA] == kUnknown && !m_state.isMoving(c.bodyB))
-            m_height[c.bodyA] = 1;
-        if (m_height[c.bodyB] == kUnknown && !m_state.isMoving(c.bodyA))
-            m_height[c.bodyB] = 1;
+    for (const auto& [a, b] : m_touchingBodies) {
+        if (m_height[a] == kUnknown && !m_state.isMoving(b))
+            m_height[a] = 1;
+        if (m_height[b] == kUnknown && !m_state.isMoving(a))
+            m_height[b] = 1;
     }
     for (bool changed = true; changed;) {
         changed = false;
-        for (uint32_t slot : m_touchingContacts) {
-            const Contact& c = m_contactPool[slot];
-            const uint32_t a = c.bodyA, b = c.bodyB;
+        for (const auto& [a, b] : m_touchingBodies) {
             if (m_height[a] == 0 || m_height[b] == 0)
                 continue; // not both in such an island
             if (m_height[a] != kUnknown && (m_height[b] == kUnknown || m_height[a] + 1 < m_height[b])) {
@@ -754,11 +754,9 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
     // and so a refinement, so a contact never straddles two groups.)
     const auto inGroup = [&](uint32_t body) { return m_state.isMoving(body) && m_refinement[body] == refinement; };
     scratch.clearContacts();
-    for (uint32_t slot : m_touchingContacts) {
-        const Contact& contact = m_contactPool[slot];
-        if (inGroup(contact.bodyA) || inGroup(contact.bodyB))
-            scratch.activeContacts.push_back(slot);
-    }
+    for (size_t k = 0; k < m_touchingContacts.size(); ++k)
+        if (inGroup(m_touchingBodies[k].first) || inGroup(m_touchingBodies[k].second))
+            scratch.activeContacts.push_back(m_touchingContacts[k]);
     const int substeps = m_substeps * refinement;
     std::span<SolveScratch> solved(&scratch, 1);
     if (splitByIslands()) {

@@ -315,6 +315,8 @@ private:
     std::vector<uint8_t> m_contactTouching;
     std::vector<std::pair<uint32_t, uint32_t>> m_pairBodies; // the bodies of m_pairContacts[i]
     std::vector<uint32_t> m_touchingContacts; // slots of the touching contacts, in pair order, after narrowphase
+    // Their bodies, so that islands and groups are found without reading the contacts.
+    std::vector<std::pair<uint32_t, uint32_t>> m_touchingBodies;
     // Scratch of findPairs() and solve(), kept between steps so that a step does not allocate.
     std::vector<uint32_t> m_nextPairContacts;
     std::vector<uint32_t> m_group;
@@ -329,6 +331,7 @@ private:
     // (their index in the pair list), and its counts.
     struct NarrowList {
         std::vector<uint32_t> touching;
+        std::vector<std::pair<uint32_t, uint32_t>> touchingBodies;
         std::vector<size_t> mayWake;
         uint64_t tested = 0, points = 0;
     };

@@ -192,6 +192,7 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
     // 11 us (measured 2026-11-26), so ramps.obj's pool growing to 7,667 contacts took 29 ms of its first 120 frames.
     // Reserving touches nothing: pages are faulted in as contacts are made.
     w.m_contactPool.reserve(16 * n);
+    w.m_contactPairs.reserve(16 * n);
     w.m_island.resize(n);
     std::iota(w.m_island.begin(), w.m_island.end(), 0u);
     return w;
@@ -317,13 +318,14 @@ void World::findPairs() {
         if (m_freeContacts.empty()) {
             slot = static_cast<uint32_t>(m_contactPool.size());
             m_contactPool.emplace_back();
+            m_contactPairs.emplace_back();
             m_contactTouching.push_back(0);
         } else {
             slot = m_freeContacts.back();
             m_freeContacts.pop_back();
             m_contactTouching[slot] = 0;
         }
-        startContact(m_contactPool[slot], p.idA, p.idB);
+        startContact(slot, p.idA, p.idB);
         next.push_back(slot);
     }
     while (old < m_pairContacts.size())
@@ -335,13 +337,12 @@ void World::findPairs() {
     m_profile.count(Counter::Pairs, m_pairContacts.size());
 }
 
-void World::startContact(Contact& c, uint32_t a, uint32_t b) const {
+void World::startContact(uint32_t slot, uint32_t a, uint32_t b) {
     // Only what a new pair needs: the rest of a reused slot (points, cached pose) is written before it is read, so
     // the whole contact is not copied over it.
-    c.bodyA = a;
-    c.bodyB = b;
-    c.friction = combine(m_frictionRule, m_friction[a], m_friction[b]);
-    c.restitution = combine(m_restitutionRule, m_restitution[a], m_restitution[b]);
+    m_contactPairs[slot] = {a, b, combine(m_frictionRule, m_friction[a], m_friction[b]),
+                            combine(m_restitutionRule, m_restitution[a], m_restitution[b])};
+    Contact& c = m_contactPool[slot];
     c.cachedMargin = -1.0;
     c.separatingAxis = Vec3(0.0);
     c.manifold.bodyA = a;
@@ -363,7 +364,7 @@ Real World::pairMargin(uint32_t a, uint32_t b) const {
 
 void World::collidePair(uint32_t slot, Real margin) {
     Contact& c = m_contactPool[slot];
-    const uint32_t a = c.bodyA, b = c.bodyB;
+    const uint32_t a = m_contactPairs[slot].bodyA, b = m_contactPairs[slot].bodyB;
 
     const Transform& xfA = m_transforms[a];
     const Transform& xfB = m_transforms[b];
@@ -420,7 +421,7 @@ void World::collidePair(uint32_t slot, Real margin) {
     // Points that persist (same features, or nearly the same place) keep their impulses for warm starting.
     warmStart(c.manifold, fresh);
     c.manifold = fresh;
-    m_contactTouching[slot] = fresh.pointCount > 0 ? 1 : 0;
+    m_contactTouching[slot] = static_cast<uint8_t>(fresh.pointCount);
     c.cachedOffset = offset;
     c.cachedRotation = rotation;
     c.cachedNormal = xfA.rotateInverse(fresh.normal);
@@ -532,7 +533,7 @@ void World::narrowphase() {
                 continue;
             mine.touching.push_back(slot);
             mine.touchingBodies.push_back(m_pairBodies[i]);
-            mine.points += static_cast<uint64_t>(m_contactPool[slot].manifold.pointCount);
+            mine.points += m_contactTouching[slot];
             const auto [a, b] = m_pairBodies[i];
             if ((!m_state.isMoving(a) && !m_state.isStatic(a)) || (!m_state.isMoving(b) && !m_state.isStatic(b)))
                 mine.mayWake.push_back(i);
@@ -668,7 +669,7 @@ void World::heightsAboveSupport(std::span<const uint32_t> moving) {
             m_height[i] = 0;
 }
 
-ContactSolver::Hold World::contactHold(const Contact& contact) const {
+ContactSolver::Hold World::contactHold(uint32_t slot) const {
     // Of two moving bodies that both rest on something (heightsAboveSupport()), the lower one is the one fewer
     // contacts from an immovable body, or at the same count the one whose centre is lower. It is held still when the
     // contact holds the upper one up against gravity (its normal within 45 degrees of vertical, the lower body
@@ -676,6 +677,7 @@ ContactSolver::Hold World::contactHold(const Contact& contact) const {
     // presses the lower body down from the side (the normal at least wedgeRise above horizontal) makes it heavier
     // instead, to 1/holdMassRatio of the upper body (see WorldTuning::holdMassRatio). A heavy body swung flat into a
     // light one on the floor is not stopped by it, however many contacts lie between the light one and the floor.
+    const ContactPair& contact = m_contactPairs[slot];
     const uint32_t ha = m_height[contact.bodyA], hb = m_height[contact.bodyB];
     const Real g2 = glm::dot(m_gravity, m_gravity);
     if (ha == 0 || hb == 0 || !(g2 > 0.0))
@@ -685,7 +687,7 @@ ContactSolver::Hold World::contactHold(const Contact& contact) const {
         ha != hb ? ha < hb : glm::dot(m_state.position[contact.bodyB] - m_state.position[contact.bodyA], up) > 0.0;
     const uint32_t lower = lowerIsA ? contact.bodyA : contact.bodyB, upper = lowerIsA ? contact.bodyB : contact.bodyA;
     // Along the normal and by centres, from the lower body to the upper one (the normal points from A to B).
-    const Real along = (lowerIsA ? 1.0 : -1.0) * glm::dot(contact.manifold.normal, up);
+    const Real along = (lowerIsA ? 1.0 : -1.0) * glm::dot(m_contactPool[slot].manifold.normal, up);
     const Real rise = glm::dot(m_state.position[upper] - m_state.position[lower], up);
     const Real lowerMass = m_state.info[lower].mass, upperMass = m_state.info[upper].mass;
     if (!(rise > 0.0) || m_tuning.holdMassRatio * lowerMass > upperMass || !(along >= m_tuning.wedgeRise))
@@ -795,7 +797,7 @@ bool World::splitByIslands() {
     const size_t members = static_cast<size_t>(m_team->size());
     // A group contact has a moving body of the group; its island is that body's.
     const auto contactIsland = [&](uint32_t slot) {
-        const Contact& c = m_contactPool[slot];
+        const ContactPair& c = m_contactPairs[slot];
         return m_island[m_state.isMoving(c.bodyA) ? c.bodyA : c.bodyB];
     };
     // m_islandMember first holds each island's entry in load, then (below) its member.
@@ -1028,14 +1030,15 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
     scratch.held.resize(contactCount);
     shareOut(parallelFor, contactCount, [&](size_t first, size_t last) {
         for (size_t k = first; k < last; ++k) {
-            Contact& contact = m_contactPool[scratch.activeContacts[k]];
-            scratch.manifolds[k] = &contact.manifold;
+            const uint32_t slot = scratch.activeContacts[k];
+            const ContactPair& contact = m_contactPairs[slot];
+            scratch.manifolds[k] = &m_contactPool[slot].manifold; // its address only: the solver reads it
             // Sleepers and anchors have solver index 0; so does a moving body of another group, which cannot touch.
             scratch.indexA[k] = m_solverIndex[contact.bodyA];
             scratch.indexB[k] = m_solverIndex[contact.bodyB];
             scratch.friction[k] = contact.friction;
             scratch.restitution[k] = contact.restitution;
-            scratch.held[k] = m_anyHeight ? contactHold(contact) : ContactSolver::Hold{};
+            scratch.held[k] = m_anyHeight ? contactHold(slot) : ContactSolver::Hold{};
         }
     });
     cutIslands(scratch);

@@ -173,12 +173,18 @@ public:
 private:
     World() = default;
 
-    // A pair's contact, some 700 bytes. The fields a new pair sets (startContact()) come first, so that starting one
-    // in a reused slot writes two cache lines of it, not the whole.
-    struct Contact {
+    // What a pair's contact does not change while the pair lasts, per pool slot (m_contactPairs): its bodies and
+    // their combined friction and restitution. Kept apart from the contact, whose lines the narrowphase and the
+    // solver write every step, so that the passes that only need these read a compact array that stays in both
+    // cores' caches.
+    struct ContactPair {
         uint32_t bodyA = 0, bodyB = 0;
         Real friction = 0.0;
         Real restitution = 0.0;
+    };
+    // A pair's contact, some 610 bytes. The fields a new pair sets (startContact()) come first, so that starting one
+    // in a reused slot writes a few of its lines, not the whole.
+    struct Contact {
         // The speculative margin the manifold was computed with (< 0: nothing cached), and while the pair is apart the
         // axis (A's shape coordinates) that separated it last, or zero.
         Real cachedMargin = -1.0;
@@ -191,9 +197,9 @@ private:
         Mat3 cachedRotation{1.0};
         Vec3 cachedNormal{0.0}; // the manifold's normal in A's shape coordinates
     };
-    // Makes `c` the contact of a new pair a-b, with no points and nothing cached. Its other fields are written
+    // Makes the slot's contact that of a new pair a-b, with no points and nothing cached. Its other fields are written
     // before they are read.
-    void startContact(Contact& c, uint32_t a, uint32_t b) const;
+    void startContact(uint32_t slot, uint32_t a, uint32_t b);
 
     void updateBroadphase();
     void findPairs();
@@ -261,7 +267,7 @@ private:
     void heightsAboveSupport(std::span<const uint32_t> moving);
     // For a contact of a mixed island (m_anyHeight): the hold on its lower body (still, or heavier: see
     // WorldTuning::holdMassRatio), or none.
-    ContactSolver::Hold contactHold(const Contact& contact) const;
+    ContactSolver::Hold contactHold(uint32_t slot) const;
     void continuousCollision();
     void updateSleep();
     Real pairMargin(uint32_t a, uint32_t b) const;
@@ -302,6 +308,7 @@ private:
     // Every broadphase pair's contact lives in a slot of the pool; m_pairContacts lists the slots in pair order,
     // which is the order every stage visits them in. Slots of ended pairs are reused (see findPairs()).
     std::vector<Contact> m_contactPool;
+    std::vector<ContactPair> m_contactPairs; // per slot of the pool
     std::vector<uint32_t> m_pairContacts;
     std::vector<uint32_t> m_freeContacts;
     std::vector<uint32_t> m_island; // island root per body (union-find), recomputed every step
@@ -310,8 +317,8 @@ private:
     std::vector<Transform> m_transforms;
     std::vector<Aabb> m_bounds; // tight world boxes of the shapes, at the start of the step
     std::vector<Real> m_reach;  // |v| + |w| radius at the start of the step, m/s: how fast any point can move
-    // Per pool slot: 1 while the contact's manifold has points. Kept beside the pool so that the narrowphase can
-    // tell without reading the contact, which is some 700 bytes in no useful order.
+    // Per pool slot: the contact's manifold's point count (not 0 while it touches). Kept beside the pool so that the
+    // narrowphase can tell without reading the contact, which is some 610 bytes in no useful order.
     std::vector<uint8_t> m_contactTouching;
     std::vector<std::pair<uint32_t, uint32_t>> m_pairBodies; // the bodies of m_pairContacts[i]
     std::vector<uint32_t> m_touchingContacts; // slots of the touching contacts, in pair order, after narrowphase

@@ -336,14 +336,19 @@ private:
     std::vector<uint32_t> m_solverIndex, m_moving;
     // Per member of the team in narrowphase(): its touching contacts, the pairs whose contact may wake a sleeper
     // (their index in the pair list), and its counts.
+    struct NarrowTest {
+        uint32_t slot;
+        Real margin;
+    };
     struct NarrowList {
+        std::vector<NarrowTest> tests; // the pairs of its current chunk that the filter let through
         std::vector<uint32_t> touching;
         std::vector<std::pair<uint32_t, uint32_t>> touchingBodies;
         std::vector<size_t> mayWake;
         uint64_t tested = 0, points = 0;
     };
     std::vector<NarrowList> m_narrowLists;
-    static constexpr size_t kNarrowChunk = 128; // pairs per claim of the narrowphase
+    static constexpr size_t kNarrowChunk = 128; // pairs per claim of the narrowphase's team
     SolveScratch m_scratch;
     std::vector<SolveScratch> m_memberScratch; // islands shared out: one part per member of the team
     static constexpr uint32_t kNoMember = 0xffffffffu;

@@ -43,6 +43,10 @@ inline Real roundedToFloat(Real x) {
     return f;
 }
 
+inline Vec3 roundedToFloat(const Vec3& v) {
+    return Vec3(roundedToFloat(v.x), roundedToFloat(v.y), roundedToFloat(v.z));
+}
+
 // r x d and I^-1 (r x d) of one side of a row, computed as ContactSolverWide.cpp's batches compute them.
 inline Vec3 angularOf(const Vec3& r, const Vec3& d) {
     return glm::cross(r, d);
@@ -107,9 +111,13 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
     c.bodyB = indexB;
     c.scaleA = held.side == ContactSolver::kHoldA ? held.scale : 1.0;
     c.scaleB = held.side == ContactSolver::kHoldB ? held.scale : 1.0;
-    c.normal = m.normal;
-    tangentBasis(m.normal, c.tangent[0], c.tangent[1]);
-    c.friction = friction;
+    // The directions, anchors, friction centres and friction coefficient are rounded to float, as the batches store
+    // them (see BatchPoint), so that both kinds of sweep compute with the same numbers.
+    c.normal = roundedToFloat(m.normal);
+    tangentBasis(c.normal, c.tangent[0], c.tangent[1]);
+    c.tangent[0] = roundedToFloat(c.tangent[0]);
+    c.tangent[1] = roundedToFloat(c.tangent[1]);
+    c.friction = roundedToFloat(friction);
     c.restitution = restitution;
     c.pointCount = m.pointCount;
     const SolverBody& a = bodies[c.bodyA];
@@ -124,8 +132,8 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
         const ContactPoint& mp = m.points[k];
         ContactConstraint::Point& p = c.points[k];
         // Both anchors sit at the world midpoint of the witness points, in world axes at the step start.
-        p.rA = mp.position - centers[c.bodyA];
-        p.rB = mp.position - centers[c.bodyB];
+        p.rA = roundedToFloat(mp.position - centers[c.bodyA]);
+        p.rB = roundedToFloat(mp.position - centers[c.bodyB]);
         // The separation and the masses are rounded to float, as the batches store them (see BatchPoint).
         p.baseSeparation = roundedToFloat(mp.separation - glm::dot(p.rB - p.rA, c.normal));
         const Vec3 angularA = angularOf(p.rA, c.normal), angularB = angularOf(p.rB, c.normal);
@@ -153,6 +161,8 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
         centerA /= weights;
         centerB /= weights;
     }
+    centerA = roundedToFloat(centerA);
+    centerB = roundedToFloat(centerB);
     c.centerA = centerA;
     c.centerB = centerB;
     for (int k = 0; k < m.pointCount; ++k)

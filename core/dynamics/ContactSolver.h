@@ -237,11 +237,11 @@ private:
         uint32_t bodyA[W] = {}, bodyB[W] = {};
         uint32_t constraint[W];
         uint32_t firstPoint = 0, pointCount = 0;
-        Lanes<W> normal[3], tangent[2][3];
-        Lanes<W> friction;
-        Lanes<W> centerA[3], centerB[3]; // the friction centres
-        FloatLanes<W> frictionMass[3];   // the constraints' frictionMass
-        FloatLanes<W> twistMass;         // likewise
+        FloatLanes<W> normal[3], tangent[2][3];
+        FloatLanes<W> friction;
+        FloatLanes<W> centerA[3], centerB[3]; // the friction centres
+        FloatLanes<W> frictionMass[3];        // the constraints' frictionMass
+        FloatLanes<W> twistMass;              // likewise
         Lanes<W> frictionImpulse[2], twistImpulse;
         Lanes<W> scaleA, scaleB; // the constraints' scaleA, scaleB
         bool holds = false;      // a lane holds a side still: the sweeps scale that side's inverse mass and inertia
@@ -249,12 +249,14 @@ private:
     // Only what a point cannot recompute is stored: the sweeps stream every point of the group through the cache
     // (54k in large_pyramid) and were bound by memory when the points carried their rows' r x d and I^-1 (r x d)
     // (1.6 kB per four lanes). Those are recomputed from the anchors and the bodies' inverse inertia, the same
-    // numbers the scalar sweeps compute (ContactSolver.cpp). The separation and masses are floats (prepare() rounds
-    // them for both kinds of sweep); anchors and impulses stay double. (Float anchors gave no speed-up beyond this
-    // machine's noise.)
+    // numbers the scalar sweeps compute (ContactSolver.cpp); stored again as floats, they made large_pyramid's solve
+    // stage slower (8.5 against 7.5 ms a step, 2026-11-27). Anchors, directions, friction centres, separations and
+    // masses are floats (prepare() rounds them for both kinds of sweep); impulses stay double. With the anchors and
+    // the batches' directions and centres in doubles, large_pyramid's warm start, solve and relax stages took 12-15 %
+    // longer (three interleaved runs on one pinned CPU, 2026-11-27).
     template <int W>
     struct BatchPoint {
-        Lanes<W> rA[3], rB[3];
+        FloatLanes<W> rA[3], rB[3];
         FloatLanes<W> baseSeparation;
         FloatLanes<W> mass;     // normal
         FloatLanes<W> leverArm; // distance from the friction centre

@@ -59,7 +59,7 @@ struct Inverse {
     Mat3 inertia;
 };
 inline Inverse inverseOf(const SolverBody& body, Real scale) {
-    return {body.invMass() * scale, body.invInertia() * scale};
+    return {body.invMass * scale, body.invInertia * scale};
 }
 inline Vec3 inertiaOf(const Inverse& inverse, const Vec3& r, const Vec3& d) {
     return inverse.inertia * glm::cross(r, d);
@@ -124,8 +124,8 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
     const SolverBody& b = bodies[c.bodyB];
     const Inverse ia = inverseOf(a, c.scaleA), ib = inverseOf(b, c.scaleB);
     // Gravity acts on the bodies that can move (not on anchors and sleepers, entries with no inverse mass).
-    const Vec3 gA = a.invMass() > 0.0 ? settings.gravity : Vec3(0.0);
-    const Vec3 gB = b.invMass() > 0.0 ? settings.gravity : Vec3(0.0);
+    const Vec3 gA = a.invMass > 0.0 ? settings.gravity : Vec3(0.0);
+    const Vec3 gB = b.invMass > 0.0 ? settings.gravity : Vec3(0.0);
     c.approachAcceleration = glm::dot(c.normal, gB - gA);
     bool impact = false;
     for (int k = 0; k < m.pointCount; ++k) {
@@ -609,11 +609,11 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
         // Current separation from the motion since the step began; anchors follow each body's rotation.
         Vec3 d;
         if constexpr (kStaticA)
-            d = b.dp() + (b.dR() * p.rB - p.rA);
+            d = b.dp + (b.dR * p.rB - p.rA);
         else if constexpr (kStaticB)
-            d = -a.dp() + (p.rB - a.dR() * p.rA);
+            d = -a.dp + (p.rB - a.dR * p.rA);
         else
-            d = (b.dp() - a.dp()) + (b.dR() * p.rB - a.dR() * p.rA);
+            d = (b.dp - a.dp) + (b.dR * p.rB - a.dR * p.rA);
         const Real s = glm::dot(c.normal, d) + p.baseSeparation;
 
         Real velocityBias = 0.0, massScale = 1.0, impulseScale = 0.0;

@@ -18,41 +18,15 @@ namespace rl {
 // current separation from the position change since the step began (dp, dR), as Box2D v3's soft step does, so the
 // collision manifolds are computed once per step and stay usable across substeps.
 struct SolverBody {
-    Vec3 v{0.0}; // linear velocity of the centre of mass
-    Vec3 w{0.0}; // angular velocity, world axes
-    // The rest is read by every sweep but written only once a substep (the motion) or a step (the masses), so it is
-    // kept in floats: 128 bytes a record, two cache lines, where doubles took four. The records of a batch's bodies
-    // are scattered over the group, and large_pyramid's 5,050 did not fit in a core's cache in doubles (1.3 MB).
-    // Read and set them through the functions below, which widen and round.
-    float dpf[3] = {0.0f, 0.0f, 0.0f}; // position change since the step began
-    float invMassf = 0.0f;             // 0 for anchors and kinematic proxies
-    float dRf[9] = {1.0f, 0.0f, 0.0f,  // rotation change since the step began, column-major as glm (a matrix:
-                    0.0f, 1.0f, 0.0f,  // 9 multiplies per anchor)
-                    0.0f, 0.0f, 1.0f};
-    float invInertiaf[6] = {}; // world inverse inertia at the step start, symmetric: xx, xy, xz, yy, yz, zz
-    float unused = 0.0f;
-
-    Real invMass() const { return invMassf; }
-    Vec3 dp() const { return Vec3(dpf[0], dpf[1], dpf[2]); }
-    Mat3 dR() const { return Mat3(dRf[0], dRf[1], dRf[2], dRf[3], dRf[4], dRf[5], dRf[6], dRf[7], dRf[8]); }
-    Mat3 invInertia() const {
-        const float* m = invInertiaf;
-        return Mat3(m[0], m[1], m[2], m[1], m[3], m[4], m[2], m[4], m[5]);
-    }
-    void setInvMass(Real inverseMass) { invMassf = static_cast<float>(inverseMass); }
-    // The upper triangle is kept: a world inverse inertia R D R^T is symmetric up to rounding.
-    void setInvInertia(const Mat3& m) {
-        const Real kept[6] = {m[0][0], m[1][0], m[2][0], m[1][1], m[2][1], m[2][2]};
-        for (int k = 0; k < 6; ++k)
-            invInertiaf[k] = static_cast<float>(kept[k]);
-    }
-    void setMotion(const Vec3& positionChange, const Mat3& rotationChange) {
-        for (int k = 0; k < 3; ++k)
-            dpf[k] = static_cast<float>(positionChange[k]);
-        for (int c = 0; c < 3; ++c)
-            for (int r = 0; r < 3; ++r)
-                dRf[3 * c + r] = static_cast<float>(rotationChange[c][r]);
-    }
+    Vec3 v{0.0};          // linear velocity of the centre of mass
+    Vec3 w{0.0};          // angular velocity, world axes
+    Vec3 dp{0.0};         // position change since the step began
+    Mat3 dR{1.0};         // rotation change since the step began (a matrix: 9 multiplies per anchor)
+    Real invMass = 0.0;   // 0 for anchors and kinematic proxies
+    Mat3 invInertia{0.0}; // world axes, taken at the start of the step
+    // 32 doubles in all, so that the batches' gathers read each record as four whole blocks of eight doubles
+    // (ContactSolverWide.cpp) without reading past the last one.
+    Real unused[4] = {0.0, 0.0, 0.0, 0.0};
 };
 
 // Coefficients of a soft constraint for one substep length (see softness()).

@@ -235,13 +235,23 @@ struct Side {
     M3<V> dR;
 };
 
-// A SolverBody record in 8-byte slots: v 0-2, w 3-5, then two floats a slot (float k in slot 6 + k / 2, the low
-// half when k is even): dp 0-2, invMass 3, dR 4-12, the inverse inertia's upper triangle 13-18, unused 19.
-static_assert(sizeof(SolverBody) == 16 * sizeof(Real) && offsetof(SolverBody, v) == 0 &&
-              offsetof(SolverBody, w) == 3 * sizeof(Real) && offsetof(SolverBody, dpf) == 6 * sizeof(Real) &&
-              offsetof(SolverBody, invMassf) == 6 * sizeof(Real) + 3 * sizeof(float) &&
-              offsetof(SolverBody, dRf) == 6 * sizeof(Real) + 4 * sizeof(float) &&
-              offsetof(SolverBody, invInertiaf) == 6 * sizeof(Real) + 13 * sizeof(float));
+// The doubles of a SolverBody record: v 0-2, w 3-5, dp 6-8, dR 9-17, invMass 18, invInertia 19-27, unused 28-31.
+static_assert(sizeof(SolverBody) == 32 * sizeof(Real) && offsetof(SolverBody, v) == 0 &&
+              offsetof(SolverBody, w) == 3 * sizeof(Real) && offsetof(SolverBody, dp) == 6 * sizeof(Real) &&
+              offsetof(SolverBody, dR) == 9 * sizeof(Real) && offsetof(SolverBody, invMass) == 18 * sizeof(Real) &&
+              offsetof(SolverBody, invInertia) == 19 * sizeof(Real));
+
+template <class V>
+RL_LANES_INLINE void unpack(Side<V>& s, const V* d, bool motion) { // d[k]: double k of the record, per lane
+    s.v = {d[0], d[1], d[2]};
+    s.w = {d[3], d[4], d[5]};
+    s.invMass = d[18];
+    s.invInertia = {{{d[19], d[20], d[21]}, {d[22], d[23], d[24]}, {d[25], d[26], d[27]}}};
+    if (motion) {
+        s.dp = {d[6], d[7], d[8]};
+        s.dR = {{{d[9], d[10], d[11]}, {d[12], d[13], d[14]}, {d[15], d[16], d[17]}}};
+    }
+}
 
 #if defined(__GNUC__) && !defined(__clang__)
 // The records of a batch's bodies are moved in blocks of W doubles and transposed in registers: block k of the W
@@ -290,41 +300,6 @@ RL_LANES_INLINE void loadBlock(const char* const record[W], int block, typename 
     transpose(rows, out);
 }
 
-// The two floats of each lane of a slot, widened: the low halves and the high halves.
-typedef float F16 __attribute__((vector_size(64)));
-RL_LANES_INLINE void split(const V4& x, V4& low, V4& high) {
-    F8 f;
-    std::memcpy(&f, &x, sizeof f);
-    low = __builtin_convertvector(__builtin_shufflevector(f, f, 0, 2, 4, 6), V4);
-    high = __builtin_convertvector(__builtin_shufflevector(f, f, 1, 3, 5, 7), V4);
-}
-RL_LANES_INLINE void split(const V8& x, V8& low, V8& high) {
-    F16 f;
-    std::memcpy(&f, &x, sizeof f);
-    low = __builtin_convertvector(__builtin_shufflevector(f, f, 0, 2, 4, 6, 8, 10, 12, 14), V8);
-    high = __builtin_convertvector(__builtin_shufflevector(f, f, 1, 3, 5, 7, 9, 11, 13, 15), V8);
-}
-
-// d[k]: slot k of the record, per lane. Without the motion, slots 6 and 8-11 are not read.
-template <class V>
-RL_LANES_INLINE void unpack(Side<V>& s, const V* d, bool motion) {
-    s.v = {d[0], d[1], d[2]};
-    s.w = {d[3], d[4], d[5]};
-    V f[20];
-    split(d[7], f[2], f[3]);
-    for (int slot = 12; slot < 16; ++slot)
-        split(d[slot], f[2 * slot - 12], f[2 * slot - 11]);
-    s.invMass = f[3];
-    s.invInertia = {{{f[13], f[14], f[15]}, {f[14], f[16], f[17]}, {f[15], f[17], f[18]}}};
-    if (motion) {
-        split(d[6], f[0], f[1]);
-        for (int slot = 8; slot < 12; ++slot)
-            split(d[slot], f[2 * slot - 12], f[2 * slot - 11]);
-        s.dp = {f[0], f[1], f[2]};
-        s.dR = {{{f[4], f[5], f[6]}, {f[7], f[8], f[9]}, {f[10], f[11], f[12]}}};
-    }
-}
-
 template <int W, bool kMotion>
 RL_LANES_INLINE void gather(Side<typename Vec<W>::V>& s, std::span<const SolverBody> bodies, const uint32_t index[W]) {
     using V = typename Vec<W>::V;
@@ -332,17 +307,24 @@ RL_LANES_INLINE void gather(Side<typename Vec<W>::V>& s, std::span<const SolverB
 #pragma GCC unroll 8
     for (int l = 0; l < W; ++l)
         record[l] = reinterpret_cast<const char*>(&bodies[index[l]]);
-    V d[16];
-    // The blocks holding v, w and slots 6-7, then (the solve only) slots 8-11, then slots 12-15.
+    V d[32];
+    // The blocks holding v and w, then dp and dR (the solve only), then invMass and invInertia.
     if constexpr (W == 4) {
         loadBlock<4>(record, 0, d);
         loadBlock<4>(record, 1, d + 4);
-        if constexpr (kMotion)
+        if constexpr (kMotion) {
             loadBlock<4>(record, 2, d + 8);
-        loadBlock<4>(record, 3, d + 12);
+            loadBlock<4>(record, 3, d + 12);
+        }
+        loadBlock<4>(record, 4, d + 16);
+        loadBlock<4>(record, 5, d + 20);
+        loadBlock<4>(record, 6, d + 24);
     } else {
         loadBlock<8>(record, 0, d);
-        loadBlock<8>(record, 1, d + 8);
+        if constexpr (kMotion)
+            loadBlock<8>(record, 1, d + 8);
+        loadBlock<8>(record, 2, d + 16);
+        loadBlock<8>(record, 3, d + 24);
     }
     unpack(s, d, kMotion);
 }
@@ -378,26 +360,15 @@ RL_LANES_INLINE void scatter(const Side<typename Vec<W>::V>& s, std::span<Solver
 #else
 template <int W, bool kMotion>
 RL_LANES_INLINE void gather(Side<typename Vec<W>::V>& s, std::span<const SolverBody> bodies, const uint32_t index[W]) {
-    const auto set = [](L3<typename Vec<W>::V>& to, int l, const Vec3& x) {
-        to.x[l] = x.x;
-        to.y[l] = x.y;
-        to.z[l] = x.z;
-    };
+    using V = typename Vec<W>::V;
+    V d[32];
     for (int l = 0; l < W; ++l) {
-        const SolverBody& body = bodies[index[l]];
-        const Mat3 invInertia = body.invInertia(), dR = body.dR();
-        set(s.v, l, body.v);
-        set(s.w, l, body.w);
-        if (kMotion)
-            set(s.dp, l, body.dp());
-        s.invMass[l] = body.invMass();
-        for (int c = 0; c < 3; ++c)
-            for (int r = 0; r < 3; ++r) {
-                s.invInertia.m[c][r][l] = invInertia[c][r];
-                if (kMotion)
-                    s.dR.m[c][r][l] = dR[c][r];
-            }
+        Real record[32];
+        std::memcpy(record, &bodies[index[l]], sizeof record);
+        for (int k = 0; k < 32; ++k)
+            d[k][l] = record[k];
     }
+    unpack(s, d, kMotion);
 }
 
 template <int W>

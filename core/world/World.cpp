@@ -1065,9 +1065,9 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
             const uint32_t i = group[k];
             SolverBody& b = bodies[k + 1];
             b = SolverBody{};
-            b.setInvMass(m_state.invMass[i]);
+            b.invMass = m_state.invMass[i];
             // Linear-only mode: the solver must not spin bodies either.
-            b.setInvInertia(rotation ? m_state.worldInverseInertia(i) : Mat3(0.0));
+            b.invInertia = rotation ? m_state.worldInverseInertia(i) : Mat3(0.0);
             // prepare() records each point's approach speed for restitution, so it must see the current velocities.
             b.v = local.linearVelocity[k];
             b.w = rotation ? local.angularVelocity[k] : Vec3(0.0);
@@ -1229,9 +1229,9 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
             fromSolver(mine);
             integratePositions(local, mine, h, m_gravity, m_damping, m_integrator, rotation);
             for (const uint32_t k : mine) {
-                bodies[k + 1].setMotion(
-                    local.position[k] - scratch.startPosition[k],
-                    glm::mat3_cast(glm::normalize(local.orientation[k] * glm::conjugate(scratch.startOrientation[k]))));
+                bodies[k + 1].dp = local.position[k] - scratch.startPosition[k];
+                bodies[k + 1].dR =
+                    glm::mat3_cast(glm::normalize(local.orientation[k] * glm::conjugate(scratch.startOrientation[k])));
             }
             toSolver(mine);
             barrier();

@@ -46,8 +46,8 @@ Problem heavyOnLight(bool holdA, Real scale) {
     p.bodies.assign(3, SolverBody{});
     p.centers = {Vec3(0.0), Vec3(0.0, 0.5, 0.0), Vec3(0.0, 1.5, 0.0)};
     for (size_t i = 1; i < 3; ++i) {
-        p.bodies[i].setInvMass(i == 1 ? 1.0 : 1e-3); // 1 kg under 1,000 kg
-        p.bodies[i].setInvInertia(Mat3(6.0 * p.bodies[i].invMass()));
+        p.bodies[i].invMass = i == 1 ? 1.0 : 1e-3; // 1 kg under 1,000 kg
+        p.bodies[i].invInertia = Mat3(6.0 * p.bodies[i].invMass);
     }
     p.bodies[2].v = Vec3(0.0, -3.0, 0.0);
     Manifold m;
@@ -79,8 +79,8 @@ Problem makeProblem(int bodyCount, int count, bool chain, unsigned seed) {
     p.centers.assign(static_cast<size_t>(bodyCount) + 1, Vec3(0.0));
     for (int i = 1; i <= bodyCount; ++i) {
         SolverBody& b = p.bodies[static_cast<size_t>(i)];
-        b.setInvMass(1.0 / (1.0 + 0.1 * i));
-        b.setInvInertia(Mat3(6.0 * b.invMass()));
+        b.invMass = 1.0 / (1.0 + 0.1 * i);
+        b.invInertia = Mat3(6.0 * b.invMass);
         b.v = Vec3(u(rng), u(rng) - 1.0, u(rng));
         b.w = Vec3(u(rng), u(rng), u(rng));
         p.centers[static_cast<size_t>(i)] = Vec3(u(rng), static_cast<Real>(i), u(rng));
@@ -274,9 +274,8 @@ private slots:
         std::mt19937 rng(3);
         std::uniform_real_distribution<Real> u(-0.01, 0.01);
         for (size_t i = 1; i < p.bodies.size(); ++i) {
-            const Vec3 dp(u(rng), u(rng), u(rng));
-            const Mat3 dR = glm::mat3_cast(glm::angleAxis(10.0 * u(rng), glm::normalize(Vec3(u(rng), 0.01, u(rng)))));
-            p.bodies[i].setMotion(dp, dR);
+            p.bodies[i].dp = Vec3(u(rng), u(rng), u(rng));
+            p.bodies[i].dR = glm::mat3_cast(glm::angleAxis(10.0 * u(rng), glm::normalize(Vec3(u(rng), 0.01, u(rng)))));
         }
         std::vector<SolverBody> sequential = p.bodies, batched = p.bodies;
         ContactSolver a, b;

@@ -117,7 +117,9 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
     tangentBasis(c.normal, c.tangent[0], c.tangent[1]);
     c.tangent[0] = roundedToFloat(c.tangent[0]);
     c.tangent[1] = roundedToFloat(c.tangent[1]);
-    c.friction = roundedToFloat(friction);
+    // (A double past a float's range has no float to round to: C++ leaves that conversion undefined, x86 gives
+    // infinity. 1e30 holds any contact as firmly as a larger coefficient would.)
+    c.friction = roundedToFloat(std::min(friction, Real(1e30)));
     c.restitution = restitution;
     c.pointCount = m.pointCount;
     const SolverBody& a = bodies[c.bodyA];

@@ -253,8 +253,8 @@ private:
     // stage slower (8.5 against 7.5 ms a step, 2026-11-27). Anchors, directions, friction centres, separations and
     // masses are floats (prepare() rounds them for both kinds of sweep); impulses stay double. With the anchors and
     // the batches' directions and centres in doubles, large_pyramid's warm start, solve and relax stages took 9-11 %
-    // longer (three interleaved runs on one pinned CPU, 2026-11-27); ramps, whose batches stay in the cache, was 3-4 %
-    // faster. A float anchor is within 2^-24 of its length: 0.03 mm for a point 500 m from its body's centre.
+    // longer (three interleaved runs on one pinned CPU, 2026-11-27); ramps, whose batches stay in the cache, was about
+    // 4 % faster. A float anchor is within 2^-24 of its length: 0.03 mm for a point 500 m from its body's centre.
     // Accumulated impulses rounded to float made the solve stage slower (7.5 against 6.7-6.9 ms): the rounding sits
     // in each row's chain of dependent operations.
     template <int W>

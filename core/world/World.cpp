@@ -752,6 +752,7 @@ void World::solve() {
 void World::solveGroup(std::span<const uint32_t> group, int refinement) {
     SolveScratch& scratch = m_scratch;
     scratch.bodies.assign(group.begin(), group.end());
+    m_groupBodies = group.size();
     // The group's contacts: those with a moving body of this group. (Two moving bodies that touch share an island,
     // and so a refinement, so a contact never straddles two groups.)
     const auto inGroup = [&](uint32_t body) { return m_state.isMoving(body) && m_refinement[body] == refinement; };
@@ -850,8 +851,11 @@ void World::cutIslands(SolveScratch& scratch) const {
     std::vector<uint8_t>& part = scratch.part;
     part.assign(group.size() + 1, 0);
     scratch.islandsCut = 0;
-    const size_t cut = m_tuning.cutIslandBodies;
-    if (cut == 0 || group.size() < cut)
+    const size_t dominant = m_tuning.cutDominantIslandBodies;
+    constexpr size_t kNever = std::numeric_limits<size_t>::max();
+    const size_t smallest =
+        std::min(m_tuning.cutIslandBodies == 0 ? kNever : m_tuning.cutIslandBodies, dominant == 0 ? kNever : dominant);
+    if (group.size() < smallest)
         return;
     std::vector<uint32_t>& size = scratch.islandSize;
     size.resize(m_state.size());
@@ -863,7 +867,7 @@ void World::cutIslands(SolveScratch& scratch) const {
     std::vector<std::pair<uint32_t, uint32_t>>& cutBodies = scratch.cutBodies;
     cutBodies.clear();
     for (size_t k = 0; k < group.size(); ++k)
-        if (size[m_island[group[k]]] >= cut)
+        if (cutsIsland(size[m_island[group[k]]]))
             cutBodies.emplace_back(m_island[group[k]], static_cast<uint32_t>(k));
     if (cutBodies.empty())
         return;
@@ -949,7 +953,7 @@ void World::cutIslands(SolveScratch& scratch) const {
         islandPart[m_island[i]] = kUnassigned;
     for (size_t k = 0; k < group.size(); ++k) {
         const uint32_t root = m_island[group[k]];
-        if (size[root] >= cut)
+        if (cutsIsland(size[root]))
             continue;
         if (islandPart[root] == kUnassigned) {
             islandPart[root] = load[0] <= load[1] ? 0 : 1;
@@ -957,6 +961,11 @@ void World::cutIslands(SolveScratch& scratch) const {
         }
         part[k + 1] = islandPart[root];
     }
+}
+
+bool World::cutsIsland(size_t bodies) const {
+    const size_t cut = m_tuning.cutIslandBodies, dominant = m_tuning.cutDominantIslandBodies;
+    return (cut != 0 && bodies >= cut) || (dominant != 0 && bodies >= dominant && 2 * bodies > m_groupBodies);
 }
 
 void World::numberByParts(SolveScratch& scratch) {

@@ -102,8 +102,18 @@ struct WorldTuning {
     // z, whatever the number of threads: the solver sweeps the constraints within each part, then those across the
     // cut (ContactSolver::prepare()), so two threads can each take a part (World::cutIslands()). 0 never cuts.
     // 1,000-box piles at rest after 10 s (seeds 1-72, measured 2026-11-24): 68 of 72 uncut, 69 as cut now; with the
-    // widest spread as the axis, 67 cut from 256 bodies and 64 from 128. Ramps' pile (245-300 bodies) is not cut.
+    // widest spread as the axis, 67 cut from 256 bodies and 64 from 128. Ramps' piles stay under 256 (see below).
     size_t cutIslandBodies = 256;
+    // An island of at least this many moving bodies that holds more than half of its group's moving bodies is cut
+    // the same way, however the bodies are shared among threads (the group decides, not a thread's share of it). No
+    // split of whole islands can balance such a group over two threads: ramps.obj from frame 120 on keeps a pile of
+    // 150-180 awake bodies beside one of 80-90, and its solve ran on one thread at every step in which that pile
+    // outweighed the rest (74 of its 300 steps). Cut, over frames 120-300 on two threads, the solve took 0.49-0.60 ms
+    // a step on average against 0.65-0.70, and the step's median 1.09-1.26 ms against 1.23-1.32 (six alternating
+    // runs each, 2026-11-27); one thread's times did not change beyond the noise, the piles of 1,000 boxes at rest
+    // after 10 s stayed 143 of seeds 1-144, and pyramid20's top drifted 0.41 mm instead of 0.45. 0 never cuts by this
+    // rule.
+    size_t cutDominantIslandBodies = 128;
 };
 
 // Figures of one frame for the timeline's tracks and the stability tests.
@@ -250,9 +260,12 @@ private:
     void solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam);
     // Shares m_scratch's islands out among the team's members (m_memberScratch) if that is worth it.
     bool splitByIslands();
-    // Fills scratch.part for its bodies (solver indices and contacts set): each island of cutIslandBodies or more is
-    // cut in two halves of its bodies, the other islands go whole to the part with fewer bodies.
+    // Fills scratch.part for its bodies (solver indices and contacts set): each island of cutIslandBodies or more, or
+    // of cutDominantIslandBodies or more that holds most of the group (m_groupBodies), is cut in two halves of its
+    // bodies, the other islands go whole to the part with fewer bodies.
     void cutIslands(SolveScratch& scratch) const;
+    // Whether an island of `bodies` moving bodies, in a group of m_groupBodies, is cut (cutIslands()).
+    bool cutsIsland(size_t bodies) const;
     // After cutIslands(): numbers the group's bodies part by part (scratch.bodies, m_solverIndex, the contacts'
     // solver indices and scratch.part follow).
     void numberByParts(SolveScratch& scratch);
@@ -351,6 +364,7 @@ private:
     static constexpr size_t kNarrowChunk = 128; // pairs per claim of the narrowphase's team
     SolveScratch m_scratch;
     std::vector<SolveScratch> m_memberScratch; // islands shared out: one part per member of the team
+    size_t m_groupBodies = 0;                  // moving bodies of the group being solved (solveGroup())
     static constexpr uint32_t kNoMember = 0xffffffffu;
     std::vector<uint32_t> m_islandMember; // per island root: the member that solves it (splitByIslands())
     std::vector<std::pair<uint32_t, uint32_t>> m_islandLoad;

@@ -290,6 +290,45 @@ private slots:
               static_cast<unsigned long long>(cut[0]), static_cast<unsigned long long>(inParts[1]));
     }
 
+    // A pyramid of 153 cubes beside 40 lone cubes: the pyramid is under 256 bodies but holds most of the group, so it
+    // is cut in two parts all the same (WorldTuning::cutDominantIslandBodies), on one thread as on two; no share of
+    // whole islands could keep two threads equally busy. The two threads then each sweep a part.
+    void dominantIslandIsCutOnAnyThreadCount_data() {
+        QTest::addColumn<int>("loneCubes");
+        QTest::addColumn<bool>("cut");
+        QTest::addRow("40 lone cubes: the pyramid holds most of the bodies") << 40 << true;
+        QTest::addRow("160 lone cubes: it does not") << 160 << false;
+    }
+    void dominantIslandIsCutOnAnyThreadCount() {
+        QFETCH(int, loneCubes);
+        QFETCH(bool, cut);
+        Scene s = scenes::pyramid(17);
+        s.bodies[0].shape.halfExtents = Vec3(40.0, 0.5, 40.0);
+        for (int i = 0; i < loneCubes; ++i)
+            s.bodies.push_back(box("Lone", Vec3(0.2), Vec3((i % 20) * 1.5 - 15.0, 0.2, 5.0 + (i / 20) * 1.5)));
+        uint64_t hashes[2], cuts[2], inParts[2];
+        for (int run = 0; run < 2; ++run) {
+            WorldOptions options;
+            options.threads = run + 1;
+            options.effects = EffectsSetting::parse("auto,-sleeping").value();
+            World w = makeWorld(s, options);
+            for (int i = 0; i < 30; ++i)
+                w.step();
+            hashes[run] = hashState(w);
+            cuts[run] = w.profile().counter(Counter::IslandsCut);
+            inParts[run] = w.profile().counter(Counter::SolvedInParts);
+        }
+        QCOMPARE(hashes[1], hashes[0]);
+        QCOMPARE(cuts[1], cuts[0]);
+        QCOMPARE(inParts[0], uint64_t(0));
+        if (cut) {
+            QCOMPARE(cuts[0], uint64_t(30)); // every step
+            QCOMPARE(inParts[1], uint64_t(30));
+        } else {
+            QCOMPARE(cuts[0], uint64_t(0));
+        }
+    }
+
     // A big island on teams of two and three: the solver's bodies, contact lists and constraints are set up by the
     // team, the impulses go back to the manifolds shared out, and the narrowphase takes its batches from both ends
     // (a team of two) or in claim order (three). With restitution the solver also keeps its constraint records for

@@ -107,12 +107,13 @@ struct WorldTuning {
     // An island of at least this many moving bodies that holds more than half of its group's moving bodies is cut
     // the same way, however the bodies are shared among threads (the group decides, not a thread's share of it). No
     // split of whole islands can balance such a group over two threads: ramps.obj from frame 120 on keeps a pile of
-    // 150-180 awake bodies beside one of 80-90, and its solve ran on one thread at every step in which that pile
-    // outweighed the rest (74 of its 300 steps). Cut, over frames 120-300 on two threads, the solve took 0.49-0.60 ms
-    // a step on average against 0.65-0.70, and the step's median 1.09-1.26 ms against 1.23-1.32 (six alternating
-    // runs each, 2026-11-27); one thread's times did not change beyond the noise, the piles of 1,000 boxes at rest
-    // after 10 s stayed 143 of seeds 1-144, and pyramid20's top drifted 0.41 mm instead of 0.45. 0 never cuts by this
-    // rule.
+    // 150-180 awake bodies beside one of 80-90, and at every step in which that pile outweighed the rest (74 of its
+    // 300) the team swept the whole group level by level, with a barrier after each level. Cut, over frames 120-300 on
+    // two threads, the solve took 0.49-0.60 ms a step on average against 0.65-0.70, and the step's median 1.09-1.26 ms
+    // against 1.23-1.32 (six alternating runs each, 2026-11-27). On one thread the same frames took 1.57-1.66 ms a step
+    // against 1.51-1.64 (six pinned pairs: slower in four by 3-8 %, faster in two by 1 %). The piles of
+    // 1,000 boxes at rest after 10 s stayed 143 of seeds 1-144, and pyramid20's top drifted 0.41 mm instead of 0.45. 0
+    // never cuts by this rule.
     size_t cutDominantIslandBodies = 128;
 };
 

@@ -851,11 +851,7 @@ void World::cutIslands(SolveScratch& scratch) const {
     std::vector<uint8_t>& part = scratch.part;
     part.assign(group.size() + 1, 0);
     scratch.islandsCut = 0;
-    const size_t dominant = m_tuning.cutDominantIslandBodies;
-    constexpr size_t kNever = std::numeric_limits<size_t>::max();
-    const size_t smallest =
-        std::min(m_tuning.cutIslandBodies == 0 ? kNever : m_tuning.cutIslandBodies, dominant == 0 ? kNever : dominant);
-    if (group.size() < smallest)
+    if (!cutsIsland(group.size())) // an island is no bigger than the group, so none of them is cut
         return;
     std::vector<uint32_t>& size = scratch.islandSize;
     size.resize(m_state.size());

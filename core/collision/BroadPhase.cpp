@@ -55,6 +55,19 @@ Status BroadPhase::moveProxy(ProxyKey key, const Aabb& tightBox, const Vec3& dis
     return Ok{};
 }
 
+std::optional<Aabb> BroadPhase::fatBoxIfMoved(ProxyKey key, const Aabb& tightBox, const Vec3& displacement) const {
+    const DynamicTree& tree = m_trees[index(key.kind)];
+    assert(tree.isProxy(key.proxy));
+    if (!tightBox.isValid())
+        return std::nullopt;
+    return tree.fatBoxIfMoved(key.proxy, tightBox, displacement);
+}
+
+void BroadPhase::reinsertProxy(ProxyKey key, const Aabb& fatBox) {
+    m_trees[index(key.kind)].reinsertProxy(key.proxy, fatBox);
+    markMoved(key);
+}
+
 void BroadPhase::touchProxy(ProxyKey key) {
     assert(m_trees[index(key.kind)].isProxy(key.proxy));
     markMoved(key);

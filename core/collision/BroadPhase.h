@@ -10,6 +10,7 @@
 #include <compare>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -65,6 +66,11 @@ public:
     // displacement is the predicted motion over the next step (velocity * dt); it stretches the fat box.
     // Fails, changing nothing, when the box is not finite or inverted.
     Status moveProxy(ProxyKey key, const Aabb& tightBox, const Vec3& displacement);
+    // moveProxy() in two halves (DynamicTree::fatBoxIfMoved()): proxies can be tested on several threads at once
+    // while nothing changes the broadphase; then reinsertProxy() puts each one that needs it back with its new fat
+    // box and marks it moved. A box that is not finite or inverted needs nothing: the proxy stays where it was.
+    std::optional<Aabb> fatBoxIfMoved(ProxyKey key, const Aabb& tightBox, const Vec3& displacement) const;
+    void reinsertProxy(ProxyKey key, const Aabb& fatBox);
     // Makes the proxy look for pairs at the next update even though its box did not change.
     void touchProxy(ProxyKey key);
 

@@ -64,8 +64,16 @@ void DynamicTree::destroyProxy(int32_t proxyId) {
 }
 
 bool DynamicTree::moveProxy(int32_t proxyId, const Aabb& tightBox, const Vec3& displacement) {
+    const std::optional<Aabb> fat = fatBoxIfMoved(proxyId, tightBox, displacement);
+    if (!fat)
+        return false;
+    reinsertProxy(proxyId, *fat);
+    return true;
+}
+
+std::optional<Aabb> DynamicTree::fatBoxIfMoved(int32_t proxyId, const Aabb& tightBox, const Vec3& displacement) const {
     assert(isProxy(proxyId) && tightBox.isValid());
-    Node& node = m_nodes[proxyId];
+    const Node& node = m_nodes[proxyId];
     const Vec3 stretch = predictedStretch(displacement);
     const Aabb fat = tightBox.fattened(m_settings.margin).extendedBy(stretch);
     // Keep the old box while it still holds the body, unless it is much larger than what the body needs now
@@ -73,11 +81,15 @@ bool DynamicTree::moveProxy(int32_t proxyId, const Aabb& tightBox, const Vec3& d
     // reaches back along the motion, because a steadily moving body's old box trails it by up to one stretch.
     const Aabb largest = fat.fattened(4.0 * m_settings.margin).extendedBy(-stretch);
     if (node.box.contains(tightBox) && largest.contains(node.box))
-        return false;
+        return std::nullopt;
+    return fat;
+}
+
+void DynamicTree::reinsertProxy(int32_t proxyId, const Aabb& fatBox) {
+    assert(isProxy(proxyId) && fatBox.isValid());
     removeLeaf(proxyId);
-    m_nodes[proxyId].box = fat;
+    m_nodes[proxyId].box = fatBox;
     insertLeaf(proxyId);
-    return true;
 }
 
 // Greedy descent by the surface area heuristic. Placing the leaf as a sibling of node N costs the area of the new

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,11 @@ public:
     // Returns true when the proxy was reinserted with a new fat box (its tight box left the old one, or the old one
     // had become much too large). Returns false, and changes nothing, otherwise.
     bool moveProxy(int32_t proxyId, const Aabb& tightBox, const Vec3& displacement);
+    // moveProxy() in two halves: fatBoxIfMoved() only reads the proxy's own node, so many proxies can be tested at
+    // once while nothing reinserts; it returns the fat box to reinsert with, or nothing when the old box still
+    // serves. reinsertProxy() then changes the tree. moveProxy() is the one followed by the other.
+    std::optional<Aabb> fatBoxIfMoved(int32_t proxyId, const Aabb& tightBox, const Vec3& displacement) const;
+    void reinsertProxy(int32_t proxyId, const Aabb& fatBox);
 
     const Aabb& fatAabb(int32_t proxyId) const { return m_nodes[proxyId].box; }
     uint32_t userId(int32_t proxyId) const { return m_nodes[proxyId].userId; }

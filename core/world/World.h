@@ -331,6 +331,9 @@ private:
     std::vector<Transform> m_transforms;
     std::vector<Aabb> m_bounds; // tight world boxes of the shapes, at the start of the step
     std::vector<Real> m_reach;  // |v| + |w| radius at the start of the step, m/s: how fast any point can move
+    // Moving bodies whose proxy must be reinserted this step, with its new fat box (refreshTransforms()).
+    std::vector<uint8_t> m_reinsert;
+    std::vector<Aabb> m_fatBoxes;
     // Per pool slot: the contact's manifold's point count (not 0 while it touches). Kept beside the pool so that the
     // narrowphase can tell without reading the contact, which is some 610 bytes in no useful order.
     std::vector<uint8_t> m_contactTouching;

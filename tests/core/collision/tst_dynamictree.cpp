@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -45,6 +46,8 @@ private slots:
     void raySlab();
     void randomOperations_data();
     void randomOperations();
+    void testedThenReinsertedMatchesMoveProxy_data();
+    void testedThenReinsertedMatchesMoveProxy();
     void jitterDoesNotReinsert();
     void fastBodyStretchesFatBox();
     void treeQuality_data();
@@ -176,6 +179,69 @@ void TestDynamicTree::randomOperations() {
     QVERIFY2(tree.validate(&problem), problem.c_str());
     QCOMPARE(tree.proxyCount(), 0);
     QCOMPARE(tree.nodeCount(), 0);
+}
+
+void TestDynamicTree::testedThenReinsertedMatchesMoveProxy_data() {
+    QTest::addColumn<uint32_t>("seed");
+    QTest::addColumn<int>("count");
+    QTest::newRow("seed 5, 300") << 5u << 300;
+    QTest::newRow("seed 6, 2000") << 6u << 2000;
+}
+
+// The world tests every proxy first (fatBoxIfMoved(), on several threads) and reinserts afterwards: that must build
+// the same tree as moveProxy() one proxy after the other, and the test alone must change nothing.
+void TestDynamicTree::testedThenReinsertedMatchesMoveProxy() {
+    QFETCH(uint32_t, seed);
+    QFETCH(int, count);
+    RandomBoxes gen(seed, std::cbrt(static_cast<Real>(count)) * 3.0);
+    DynamicTree one, split;
+    std::vector<int32_t> proxies;
+    std::vector<Aabb> tight;
+    for (int i = 0; i < count; ++i) {
+        tight.push_back(gen.box());
+        proxies.push_back(one.createProxy(tight.back(), static_cast<uint32_t>(i)));
+        QCOMPARE(split.createProxy(tight.back(), static_cast<uint32_t>(i)), proxies.back());
+    }
+    int reinsertedTotal = 0;
+    for (int round = 0; round < 6; ++round) {
+        std::vector<Vec3> steps(static_cast<size_t>(count));
+        for (int i = 0; i < count; ++i) {
+            steps[i] = Vec3(gen.uniform(-0.3, 0.3), gen.uniform(-0.3, 0.3), gen.uniform(-0.3, 0.3));
+            tight[i] = Aabb{tight[i].min + steps[i], tight[i].max + steps[i]};
+        }
+        std::vector<bool> moved(static_cast<size_t>(count));
+        for (int i = 0; i < count; ++i)
+            moved[i] = one.moveProxy(proxies[i], tight[i], steps[i]);
+        std::vector<std::optional<Aabb>> fat(static_cast<size_t>(count));
+        for (int i = 0; i < count; ++i) {
+            const Aabb before = split.fatAabb(proxies[i]);
+            fat[i] = split.fatBoxIfMoved(proxies[i], tight[i], steps[i]);
+            QCOMPARE(split.fatAabb(proxies[i]), before);
+            QCOMPARE(fat[i].has_value(), bool(moved[i]));
+        }
+        for (int i = 0; i < count; ++i)
+            if (fat[i]) {
+                split.reinsertProxy(proxies[i], *fat[i]);
+                ++reinsertedTotal;
+            }
+        std::string problem;
+        QVERIFY2(split.validate(&problem), problem.c_str());
+        QCOMPARE(split.nodeCount(), one.nodeCount());
+        for (int i = 0; i < count; ++i)
+            QCOMPARE(split.fatAabb(proxies[i]), one.fatAabb(proxies[i]));
+        const Aabb query = Aabb::fromCenterHalfExtents(gen.point(), Vec3(3.0));
+        std::vector<int32_t> foundOne, foundSplit;
+        one.query(query, [&](int32_t p) {
+            foundOne.push_back(p);
+            return true;
+        });
+        split.query(query, [&](int32_t p) {
+            foundSplit.push_back(p);
+            return true;
+        });
+        QCOMPARE(foundSplit, foundOne); // the same tree, so the same order
+    }
+    QVERIFY(reinsertedTotal > count); // the rounds moved proxies out of their fat boxes
 }
 
 void TestDynamicTree::jitterDoesNotReinsert() {

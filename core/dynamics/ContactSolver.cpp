@@ -422,6 +422,8 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
     static_assert(std::is_trivially_copyable_v<Batch<W>> && std::is_trivially_copyable_v<BatchPoint<W>>);
     batches.resize(layout.size());
     points.resize(pointTotal);
+    const bool maxImpulse = m_settings.restitution;
+    store.maxImpulse.resize(maxImpulse ? pointTotal : 0);
     m_laneOf.resize(m_count);
     m_order.resize(m_count);
     shareOut(parallelFor, layout.size(), [&](size_t begin, size_t end) {
@@ -451,6 +453,8 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
             batch.pointCount = at.pointCount;
             for (uint32_t k = 0; k < at.pointCount; ++k)
                 std::memset(static_cast<void*>(&points[at.firstPoint + k]), 0, sizeof(BatchPoint<W>));
+            if (maxImpulse)
+                std::memset(static_cast<void*>(&store.maxImpulse[at.firstPoint]), 0, at.pointCount * sizeof(Lanes<W>));
             for (uint32_t l = 0; l < at.lanes; ++l) {
                 const int lane = static_cast<int>(l);
                 const uint32_t index = m_solveOrder[at.first + l];
@@ -490,7 +494,8 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
                     q.mass.v[l] = static_cast<float>(p.normalMass);
                     q.leverArm.v[l] = static_cast<float>(p.leverArm);
                     q.impulse.v[l] = p.normalImpulse;
-                    q.maxNormalImpulse.v[l] = p.maxNormalImpulse;
+                    if (maxImpulse)
+                        store.maxImpulse[at.firstPoint + static_cast<uint32_t>(k)].v[l] = p.maxNormalImpulse;
                 }
             }
         }
@@ -518,10 +523,10 @@ void ContactSolver::syncFromBatches(const BatchStore<W>& store) const {
             c.frictionImpulse[1] = batch.frictionImpulse[1].v[l];
             c.twistImpulse = batch.twistImpulse.v[l];
             for (int k = 0; k < c.pointCount; ++k) {
-                const BatchPoint<W>& q = store.points[batch.firstPoint + static_cast<uint32_t>(k)];
+                const uint32_t point = batch.firstPoint + static_cast<uint32_t>(k);
                 ContactConstraint::Point& p = c.points[c.order[k]];
-                p.normalImpulse = q.impulse.v[l];
-                p.maxNormalImpulse = q.maxNormalImpulse.v[l];
+                p.normalImpulse = store.points[point].impulse.v[l];
+                p.maxNormalImpulse = store.maxImpulse.empty() ? 0.0 : store.maxImpulse[point].v[l];
             }
         }
 }
@@ -632,7 +637,8 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
         const Real newImpulse = std::max(p.normalImpulse + impulse, 0.0);
         impulse = newImpulse - p.normalImpulse;
         p.normalImpulse = newImpulse;
-        p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
+        if (settings.restitution)
+            p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse);
         applyRowT<kStaticA, kStaticB>(a, b, ia, ib, p, c.normal, impulse);
     }
 

@@ -483,7 +483,7 @@ RL_LANES_INLINE void ContactSolver::warmStartBatches(BatchStore<W>& store, std::
     }
 }
 
-template <int W>
+template <int W, bool kMaxImpulse>
 RL_LANES_INLINE void ContactSolver::solveBatches(BatchStore<W>& store, std::span<SolverBody> bodies, bool useBias,
                                                  size_t begin, size_t end) {
     using V = typename Vec<W>::V;
@@ -518,7 +518,10 @@ RL_LANES_INLINE void ContactSolver::solveBatches(BatchStore<W>& store, std::span
             const V total = maxOf(accumulated + trial, zero);
             const V impulse = total - accumulated;
             put<W>(p.impulse, total);
-            put<W>(p.maxNormalImpulse, maxOf(get<W>(p.maxNormalImpulse), impulse));
+            if constexpr (kMaxImpulse) {
+                Lanes<W>& largest = store.maxImpulse[batch.firstPoint + k];
+                put<W>(largest, maxOf(get<W>(largest), impulse));
+            }
             applyRow(a, b, row, impulse);
         }
         if (friction) {
@@ -574,10 +577,16 @@ RL_WIDE8 void ContactSolver::warmStartBatches8(std::span<SolverBody> bodies, siz
     warmStartBatches(m_store8, bodies, begin, end);
 }
 RL_WIDE4 void ContactSolver::solveBatches4(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end) {
-    solveBatches(m_store4, bodies, useBias, begin, end);
+    if (m_settings.restitution)
+        solveBatches<4, true>(m_store4, bodies, useBias, begin, end);
+    else
+        solveBatches<4, false>(m_store4, bodies, useBias, begin, end);
 }
 RL_WIDE8 void ContactSolver::solveBatches8(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end) {
-    solveBatches(m_store8, bodies, useBias, begin, end);
+    if (m_settings.restitution)
+        solveBatches<8, true>(m_store8, bodies, useBias, begin, end);
+    else
+        solveBatches<8, false>(m_store8, bodies, useBias, begin, end);
 }
 
 void ContactSolver::warmStartBatchRange(std::span<SolverBody> bodies, size_t begin, size_t end) {

@@ -421,6 +421,7 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
     // sized here.
     static_assert(std::is_trivially_copyable_v<Batch<W>> && std::is_trivially_copyable_v<BatchPoint<W>>);
     batches.resize(layout.size());
+    store.scales.resize(layout.size());
     points.resize(pointTotal);
     const bool maxImpulse = m_settings.restitution;
     store.maxImpulse.resize(maxImpulse ? pointTotal : 0);
@@ -447,8 +448,8 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
             // Lanes past at.lanes stay empty: no constraint, bodies 0, zero masses and impulses.
             Batch<W>& batch = batches[b];
             std::memset(static_cast<void*>(&batch), 0, sizeof(Batch<W>));
-            for (int l = 0; l < W; ++l)
-                batch.constraint[l] = kNoConstraint;
+            BatchScales<W>& scales = store.scales[b];
+            std::memset(static_cast<void*>(&scales), 0, sizeof(BatchScales<W>));
             batch.firstPoint = at.firstPoint;
             batch.pointCount = at.pointCount;
             for (uint32_t k = 0; k < at.pointCount; ++k)
@@ -468,14 +469,13 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
                 std::copy(c.order, c.order + 4, m_order[index].begin());
                 batch.bodyA[l] = c.bodyA;
                 batch.bodyB[l] = c.bodyB;
-                batch.constraint[l] = index;
                 m_laneOf[index] = static_cast<uint32_t>(b * W + l);
                 set(batch.normal, c.normal, lane);
                 set(batch.tangent[0], c.tangent[0], lane);
                 set(batch.tangent[1], c.tangent[1], lane);
                 batch.friction.v[l] = c.friction;
-                batch.scaleA.v[l] = c.scaleA;
-                batch.scaleB.v[l] = c.scaleB;
+                scales.a.v[l] = c.scaleA;
+                scales.b.v[l] = c.scaleB;
                 batch.holds = batch.holds || c.scaleA != 1.0 || c.scaleB != 1.0;
                 set(batch.centerA, c.centerA, lane);
                 set(batch.centerB, c.centerB, lane);
@@ -514,11 +514,12 @@ void ContactSolver::syncFromBatches() const {
 
 template <int W>
 void ContactSolver::syncFromBatches(const BatchStore<W>& store) const {
-    for (const Batch<W>& batch : store.batches)
-        for (int l = 0; l < W; ++l) {
-            if (batch.constraint[l] == kNoConstraint)
-                continue;
-            ContactConstraint& c = m_constraints[batch.constraint[l]];
+    for (size_t n = 0; n < store.batches.size(); ++n) {
+        const Batch<W>& batch = store.batches[n];
+        const BatchLayout& at = m_batchLayout[n];
+        for (uint32_t lane = 0; lane < at.lanes; ++lane) {
+            const int l = static_cast<int>(lane);
+            ContactConstraint& c = m_constraints[m_solveOrder[at.first + lane]];
             c.frictionImpulse[0] = batch.frictionImpulse[0].v[l];
             c.frictionImpulse[1] = batch.frictionImpulse[1].v[l];
             c.twistImpulse = batch.twistImpulse.v[l];
@@ -529,6 +530,7 @@ void ContactSolver::syncFromBatches(const BatchStore<W>& store) const {
                 p.maxNormalImpulse = store.maxImpulse.empty() ? 0.0 : store.maxImpulse[point].v[l];
             }
         }
+    }
 }
 
 void ContactSolver::warmStart(std::span<SolverBody> bodies) {

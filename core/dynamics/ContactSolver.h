@@ -227,24 +227,27 @@ public:
 private:
     // A batch: W constraints of one level in lanes (an empty lane has bodies 0 and zero masses), with its points
     // in the store's points. Lane l's point k is its constraint's k-th point in solve order (ContactConstraint::order);
-    // lanes with fewer points carry zero points, which apply no impulse.
+    // lanes with fewer points carry zero points, which apply no impulse. Lane l holds constraint
+    // m_solveOrder[m_batchLayout[batch].first + l].
     template <int W>
     struct Batch {
-        Batch() {
-            for (int l = 0; l < W; ++l)
-                constraint[l] = kNoConstraint;
-        }
         uint32_t bodyA[W] = {}, bodyB[W] = {};
-        uint32_t constraint[W];
         uint32_t firstPoint = 0, pointCount = 0;
+        bool holds = false; // a lane holds a side still: the sweeps scale that side's inverse mass and inertia
         FloatLanes<W> normal[3], tangent[2][3];
         FloatLanes<W> friction;
         FloatLanes<W> centerA[3], centerB[3]; // the friction centres
         FloatLanes<W> frictionMass[3];        // the constraints' frictionMass
         FloatLanes<W> twistMass;              // likewise
         Lanes<W> frictionImpulse[2], twistImpulse;
-        Lanes<W> scaleA, scaleB; // the constraints' scaleA, scaleB
-        bool holds = false;      // a lane holds a side still: the sweeps scale that side's inverse mass and inertia
+    };
+    // The constraints' scaleA and scaleB, read only by a batch that holds. (In the batch, with each lane's constraint
+    // index, they made it 1,152 bytes instead of 960 with eight lanes: large_pyramid's solve and relax stages took
+    // 6.28-6.59 and 3.12-3.27 ms a step, now 5.97-6.05 and 2.98-3.04 ms; its frames 5-45 on one pinned CPU, three
+    // interleaved runs, 2026-11-27.)
+    template <int W>
+    struct BatchScales {
+        Lanes<W> a, b;
     };
     // Only what a point cannot recompute is stored: the sweeps stream every point of the group through the cache
     // (54k in large_pyramid) and were bound by memory when the points carried their rows' r x d and I^-1 (r x d)
@@ -268,6 +271,7 @@ private:
     template <int W>
     struct BatchStore {
         std::vector<Batch<W>> batches;
+        std::vector<BatchScales<W>> scales; // one per batch
         std::vector<BatchPoint<W>> points;
         // Each point's maxNormalImpulse, beside the points: only the restitution pass reads it, so it is kept (and
         // this sized like points) only while restitution is on. (Kept in every point, it was read and written by
@@ -276,7 +280,6 @@ private:
         // interleaved runs, 2026-11-27.)
         std::vector<Lanes<W>> maxImpulse;
     };
-    static constexpr uint32_t kNoConstraint = 0xffffffffu;
     // Where buildBatches() puts a batch: its first constraint in m_solveOrder, its lanes, and its point slots.
     struct BatchLayout {
         uint32_t first, lanes, firstPoint, pointCount;

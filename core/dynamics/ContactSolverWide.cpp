@@ -394,14 +394,14 @@ RL_LANES_INLINE void scaleSide(Side<V>& s, const V& scale) {
 }
 
 // Both sides of a batch, gathered, with a held side's inverse mass and inertia scaled (see scaleSide()).
-template <int W, bool kMotion, class BatchT>
-RL_LANES_INLINE void gatherSides(const BatchT& batch, std::span<const SolverBody> bodies, Side<typename Vec<W>::V>& a,
-                                 Side<typename Vec<W>::V>& b) {
+template <int W, bool kMotion, class BatchT, class ScalesT>
+RL_LANES_INLINE void gatherSides(const BatchT& batch, const ScalesT& scales, std::span<const SolverBody> bodies,
+                                 Side<typename Vec<W>::V>& a, Side<typename Vec<W>::V>& b) {
     gather<W, kMotion>(a, bodies, batch.bodyA);
     gather<W, kMotion>(b, bodies, batch.bodyB);
     if (batch.holds) {
-        scaleSide(a, get<W>(batch.scaleA));
-        scaleSide(b, get<W>(batch.scaleB));
+        scaleSide(a, get<W>(scales.a));
+        scaleSide(b, get<W>(scales.b));
     }
 }
 
@@ -465,7 +465,7 @@ RL_LANES_INLINE void ContactSolver::warmStartBatches(BatchStore<W>& store, std::
     for (size_t n = begin; n < end; ++n) {
         const Batch<W>& batch = store.batches[n];
         Side<V> a, b;
-        gatherSides<W, false>(batch, bodies, a, b);
+        gatherSides<W, false>(batch, store.scales[n], bodies, a, b);
         const L3<V> normal = load<W>(batch.normal);
         const L3<V> tangent[2] = {load<W>(batch.tangent[0]), load<W>(batch.tangent[1])};
         for (uint32_t k = 0; k < batch.pointCount; ++k) {
@@ -496,7 +496,7 @@ RL_LANES_INLINE void ContactSolver::solveBatches(BatchStore<W>& store, std::span
     for (size_t n = begin; n < end; ++n) {
         Batch<W>& batch = store.batches[n];
         Side<V> a, b;
-        gatherSides<W, true>(batch, bodies, a, b);
+        gatherSides<W, true>(batch, store.scales[n], bodies, a, b);
         const L3<V> normal = load<W>(batch.normal);
         for (uint32_t k = 0; k < batch.pointCount; ++k) {
             BatchPoint<W>& p = store.points[batch.firstPoint + k];

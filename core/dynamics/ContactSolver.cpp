@@ -129,13 +129,21 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
     const Vec3 gA = a.invMass > 0.0 ? settings.gravity : Vec3(0.0);
     const Vec3 gB = b.invMass > 0.0 ? settings.gravity : Vec3(0.0);
     c.approachAcceleration = glm::dot(c.normal, gB - gA);
+    // Both anchors sit at the world midpoint of the witness points, in world axes at the step start. Every point's
+    // rB is its rA plus one offset, the vector between the centres, so the batches store one anchor a point and the
+    // offset once (BatchPoint). A side that does not move (entry 0: zero velocities, no motion) takes the other
+    // side's anchor, as good as any point there (the separation's anchor term, n . (rB - rA), then vanishes), and
+    // better conditioned than a world position far from the origin. (A float sum of floats is the double sum rounded
+    // once to float, so the batched sweeps get the same rB by adding in floats.)
+    const bool stillA = c.bodyA == 0, stillB = c.bodyB == 0;
+    c.anchorOffset = stillA || stillB ? Vec3(0.0) : roundedToFloat(centers[c.bodyA] - centers[c.bodyB]);
+    const Vec3& anchorBase = stillA ? centers[c.bodyB] : centers[c.bodyA];
     bool impact = false;
     for (int k = 0; k < m.pointCount; ++k) {
         const ContactPoint& mp = m.points[k];
         ContactConstraint::Point& p = c.points[k];
-        // Both anchors sit at the world midpoint of the witness points, in world axes at the step start.
-        p.rA = roundedToFloat(mp.position - centers[c.bodyA]);
-        p.rB = roundedToFloat(mp.position - centers[c.bodyB]);
+        p.rA = roundedToFloat(mp.position - anchorBase);
+        p.rB = roundedToFloat(p.rA + c.anchorOffset);
         // The separation and the masses are rounded to float, as the batches store them (see BatchPoint).
         p.baseSeparation = roundedToFloat(mp.separation - glm::dot(p.rB - p.rA, c.normal));
         const Vec3 angularA = angularOf(p.rA, c.normal), angularB = angularOf(p.rB, c.normal);
@@ -477,6 +485,7 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
                 scales.a.v[l] = c.scaleA;
                 scales.b.v[l] = c.scaleB;
                 batch.holds = batch.holds || c.scaleA != 1.0 || c.scaleB != 1.0;
+                set(batch.anchorOffset, c.anchorOffset, lane);
                 set(batch.centerA, c.centerA, lane);
                 set(batch.centerB, c.centerB, lane);
                 for (int m = 0; m < 3; ++m)
@@ -489,7 +498,6 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
                     const ContactConstraint::Point& p = c.points[c.order[k]];
                     BatchPoint<W>& q = points[at.firstPoint + static_cast<uint32_t>(k)];
                     set(q.rA, p.rA, lane);
-                    set(q.rB, p.rB, lane);
                     q.baseSeparation.v[l] = static_cast<float>(p.baseSeparation);
                     q.mass.v[l] = static_cast<float>(p.normalMass);
                     q.leverArm.v[l] = static_cast<float>(p.leverArm);

@@ -70,7 +70,9 @@ struct ContactSolverCounters {
 // One manifold's solver data. bodyA/bodyB index the SolverBody array; a static body is an entry with invMass 0.
 struct ContactConstraint {
     struct Point {
-        Vec3 rA{0.0}, rB{0.0};     // anchors relative to each centre of mass, world axes, at the step start
+        // Anchors relative to each centre of mass, world axes, at the step start: rB is rA + anchorOffset (both
+        // rounded to float; see setUpConstraint()). A side that does not move (entry 0) has the other side's anchor.
+        Vec3 rA{0.0}, rB{0.0};
         Real baseSeparation = 0.0; // separation minus the anchor term, so dp/dq give the current separation
         // A row d reads and applies velocities through r x d for each body and that times its world inverse inertia:
         // (w x r) . d = w . (r x d), and the angular change of an impulse j d is j I^-1 (r x d). They are worked out
@@ -83,6 +85,7 @@ struct ContactConstraint {
         Real leverArm = 0.0;         // distance from the friction centre: its normal impulse's share of the twist limit
     };
     uint32_t bodyA = 0, bodyB = 0;
+    Vec3 anchorOffset{0.0}; // every point's rB - rA: A's centre less B's, rounded to float; zero beside entry 0
     Vec3 normal{0.0, 1.0, 0.0};
     Vec3 tangent[2];
     Real friction = 0.0;
@@ -235,6 +238,7 @@ private:
         uint32_t firstPoint = 0, pointCount = 0;
         bool holds = false; // a lane holds a side still: the sweeps scale that side's inverse mass and inertia
         FloatLanes<W> normal[3], tangent[2][3];
+        FloatLanes<W> anchorOffset[3]; // rB - rA of every point (ContactConstraint::anchorOffset)
         FloatLanes<W> friction;
         FloatLanes<W> centerA[3], centerB[3]; // the friction centres
         FloatLanes<W> frictionMass[3];        // the constraints' frictionMass
@@ -260,9 +264,13 @@ private:
     // 4 % faster. A float anchor is within 2^-24 of its length: 0.03 mm for a point 500 m from its body's centre.
     // Accumulated impulses rounded to float made the solve stage slower (7.5 against 6.7-6.9 ms): the rounding sits
     // in each row's chain of dependent operations.
+    // A point stores one anchor: rB is rA plus the batch's anchorOffset. With rB stored too (384 bytes a point of
+    // eight lanes, now 256), large_pyramid's warm start and solve stages took 1.55-1.56 and 6.11-6.13 ms a step against
+    // 1.45-1.50 and 6.03-6.09 in a quiet hour, and 2.05-2.13 and 7.46-7.58 against 1.87-2.04 and 7.07-7.10 while the
+    // host was busy (its frames 5-45 on one pinned CPU, interleaved runs, 2026-11-27).
     template <int W>
     struct BatchPoint {
-        FloatLanes<W> rA[3], rB[3];
+        FloatLanes<W> rA[3]; // rB is rA + the batch's anchorOffset, added in floats
         FloatLanes<W> baseSeparation;
         FloatLanes<W> mass;     // normal
         FloatLanes<W> leverArm; // distance from the friction centre

@@ -62,6 +62,15 @@ RL_LANES_INLINE typename Vec<W>::V widen(const ContactSolver::FloatLanes<W>& lan
     std::memcpy(&f, lanes.v, sizeof f);
     return __builtin_convertvector(f, typename Vec<W>::V);
 }
+// x + y added in floats, then widened exactly.
+template <int W>
+RL_LANES_INLINE typename Vec<W>::V widenSum(const ContactSolver::FloatLanes<W>& x,
+                                            const ContactSolver::FloatLanes<W>& y) {
+    typename Vec<W>::F f, g;
+    std::memcpy(&f, x.v, sizeof f);
+    std::memcpy(&g, y.v, sizeof g);
+    return __builtin_convertvector(f + g, typename Vec<W>::V);
+}
 #else
 template <int W>
 struct ArrayV {
@@ -120,6 +129,10 @@ RL_LANES_INLINE ArrayV<W> select(const ArrayMask<W>& m, const ArrayV<W>& x, cons
 template <int W>
 RL_LANES_INLINE ArrayV<W> widen(const ContactSolver::FloatLanes<W>& lanes) {
     return perLane<ArrayV<W>, W>([&](int l) { return static_cast<Real>(lanes.v[l]); });
+}
+template <int W>
+RL_LANES_INLINE ArrayV<W> widenSum(const ContactSolver::FloatLanes<W>& x, const ContactSolver::FloatLanes<W>& y) {
+    return perLane<ArrayV<W>, W>([&](int l) { return static_cast<Real>(x.v[l] + y.v[l]); });
 }
 #endif
 
@@ -189,6 +202,13 @@ struct L3 {
 template <int W, class Stored>
 RL_LANES_INLINE L3<typename Vec<W>::V> load(const Stored* c) {
     return {get<W>(c[0]), get<W>(c[1]), get<W>(c[2])};
+}
+// A point's anchor on B: its anchor on A plus the batch's offset, added in floats as prepare() adds them
+// (ContactConstraint::anchorOffset).
+template <int W, class BatchT, class PointT>
+RL_LANES_INLINE L3<typename Vec<W>::V> anchorB(const BatchT& batch, const PointT& p) {
+    return {widenSum<W>(p.rA[0], batch.anchorOffset[0]), widenSum<W>(p.rA[1], batch.anchorOffset[1]),
+            widenSum<W>(p.rA[2], batch.anchorOffset[2])};
 }
 template <class V>
 RL_LANES_INLINE L3<V> operator+(const L3<V>& a, const L3<V>& b) {
@@ -472,7 +492,7 @@ RL_LANES_INLINE void ContactSolver::warmStartBatches(BatchStore<W>& store, std::
             const BatchPoint<W>& p = store.points[batch.firstPoint + k];
             if (!anyNonZero<W>(p.impulse))
                 continue; // speculative points that never pushed, in every lane: nothing to apply
-            const L3<V> rA = load<W>(p.rA), rB = load<W>(p.rB);
+            const L3<V> rA = load<W>(p.rA), rB = anchorB<W>(batch, p);
             applyRow(a, b, makeRow(a, b, normal, rA, rB), get<W>(p.impulse));
         }
         applyTwist(a, b, normal, get<W>(batch.twistImpulse));
@@ -501,7 +521,7 @@ RL_LANES_INLINE void ContactSolver::solveBatches(BatchStore<W>& store, std::span
         for (uint32_t k = 0; k < batch.pointCount; ++k) {
             BatchPoint<W>& p = store.points[batch.firstPoint + k];
             // Current separation from the motion since the step began; anchors follow each body's rotation.
-            const L3<V> rA = load<W>(p.rA), rB = load<W>(p.rB);
+            const L3<V> rA = load<W>(p.rA), rB = anchorB<W>(batch, p);
             const L3<V> d = (b.dp - a.dp) + (b.dR * rB - a.dR * rA);
             const V s = dot(normal, d) + get<W>(p.baseSeparation);
             // Speculative points (s > 0) may close the gap within this substep; touching ones are soft while the

@@ -315,6 +315,22 @@ private slots:
                 pushing += ca.points[k].normalImpulse > 0.0 ? 1 : 0;
             }
         }
+        // The batches store one anchor a point: rB is rA plus the constraint's offset, added in floats; beside the
+        // static entry (which does not move) the two anchors are one.
+        int besideStatic = 0;
+        for (const ContactConstraint& c : a.constraints())
+            for (int k = 0; k < c.pointCount; ++k) {
+                const ContactConstraint::Point& q = c.points[k];
+                const Vec3 sum(static_cast<float>(q.rA.x) + static_cast<float>(c.anchorOffset.x),
+                               static_cast<float>(q.rA.y) + static_cast<float>(c.anchorOffset.y),
+                               static_cast<float>(q.rA.z) + static_cast<float>(c.anchorOffset.z));
+                QCOMPARE(q.rB, sum);
+                if (c.bodyA == 0 || c.bodyB == 0) {
+                    QCOMPARE(q.rB, q.rA);
+                    ++besideStatic;
+                }
+            }
+        QVERIFY(besideStatic > 0);
         qInfo("%d constraints, %d solved deepest point first, %d points pushing, %d with friction and twist; batches "
               "of %d lanes",
               constraints, impacts, pushing, rubbing, b.laneWidth());

@@ -462,7 +462,7 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
             batch.pointCount = at.pointCount;
             for (uint32_t k = 0; k < at.pointCount; ++k)
                 std::memset(static_cast<void*>(&points[at.firstPoint + k]), 0, sizeof(BatchPoint<W>));
-            if (maxImpulse)
+            if (maxImpulse && at.pointCount > 0)
                 std::memset(static_cast<void*>(&store.maxImpulse[at.firstPoint]), 0, at.pointCount * sizeof(Lanes<W>));
             for (uint32_t l = 0; l < at.lanes; ++l) {
                 const int lane = static_cast<int>(l);

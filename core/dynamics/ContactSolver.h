@@ -17,7 +17,14 @@ namespace rl {
 // Hot per-body state the solver reads and writes during a step. Positions are not needed: the solver measures the
 // current separation from the position change since the step began (dp, dR), as Box2D v3's soft step does, so the
 // collision manifolds are computed once per step and stay usable across substeps.
-struct SolverBody {
+//
+// Records are aligned to their size (alignas(256)): each is four whole cache lines, and none straddles a page. Left to
+// the allocator, the array started 16 bytes into a line in one build and on a page in another, and large_pyramid's
+// warm start, solve and relax stages on one pinned CPU took 1.78-1.83, 6.86-6.94 and 3.44-3.48 ms a step against
+// 1.55-1.72, 6.19-6.47 and 3.10-3.28 (frames 5-45). Aligned to lines only, 2.10-2.15, 7.43-7.61 and 3.78-3.89 ms
+// against 2.01-2.11, 7.22-7.44 and 3.66-3.82 aligned to 256 bytes, on a busier host (four interleaved runs,
+// 2026-11-27).
+struct alignas(256) SolverBody {
     Vec3 v{0.0};          // linear velocity of the centre of mass
     Vec3 w{0.0};          // angular velocity, world axes
     Vec3 dp{0.0};         // position change since the step began
@@ -28,6 +35,7 @@ struct SolverBody {
     // (ContactSolverWide.cpp) without reading past the last one.
     Real unused[4] = {0.0, 0.0, 0.0, 0.0};
 };
+static_assert(sizeof(SolverBody) == 256, "a solver body is four cache lines");
 
 // Coefficients of a soft constraint for one substep length (see softness()).
 struct Softness {

@@ -206,16 +206,8 @@ void World::step() {
     {
         StageTimer t(m_profile, Stage::UpdateBroadphase);
         refreshTransforms();
-        updateBroadphase();
     }
-    {
-        StageTimer t(m_profile, Stage::FindPairs);
-        findPairs();
-    }
-    {
-        StageTimer t(m_profile, Stage::Narrowphase);
-        narrowphase();
-    }
+    findAndCollidePairs(); // times update_broadphase (the reinsertions), find_pairs and narrowphase
     {
         StageTimer t(m_profile, Stage::BuildIslands);
         buildIslands();
@@ -297,8 +289,8 @@ ContactSolver::ParallelFor World::teamParallelFor() {
     };
 }
 
-void World::findPairs() {
-    m_broadPhase.updatePairs(teamParallelFor());
+void World::mergePairs(const BroadPhase::ParallelFor& parallelFor) {
+    m_broadPhase.updatePairs(parallelFor);
     const auto pairs = m_broadPhase.pairs();
     // Most steps the pair list is the one we already hold; then there is nothing to merge.
     // The bodies of each contact are kept beside the slot list (m_pairBodies), so neither this test nor the merge
@@ -306,47 +298,73 @@ void World::findPairs() {
     const auto sameBodies = [](const BroadPhasePair& p, const std::pair<uint32_t, uint32_t>& bodies) {
         return p.idA == bodies.first && p.idB == bodies.second;
     };
-    const bool unchanged =
-        pairs.size() == m_pairBodies.size() && std::equal(pairs.begin(), pairs.end(), m_pairBodies.begin(), sameBodies);
-    if (unchanged) {
-        m_profile.count(Counter::Pairs, m_pairContacts.size());
+    m_pairsChanged = !(pairs.size() == m_pairBodies.size() &&
+                       std::equal(pairs.begin(), pairs.end(), m_pairBodies.begin(), sameBodies));
+    if (!m_pairsChanged)
         return;
-    }
-    // Merge the sorted pair list with the sorted contact list. A pair that persists keeps its slot of the pool, and
-    // with it its manifold; only the slot numbers move. Slots of pairs that ended are reused by new pairs. (Copying
-    // the contacts themselves, some 660 bytes each, made this stage 0.7 ms per step over ramps.obj's first 120
-    // frames, ~6,000 pairs; moving slot numbers, 0.4 ms.)
+    // Merge the sorted pair list with the sorted contact list into the next lists. A pair that persists keeps its
+    // slot of the pool, and with it its manifold; only the slot numbers move. (Copying the contacts themselves, some
+    // 660 bytes each, made this stage 0.7 ms per step over ramps.obj's first 120 frames, ~6,000 pairs; moving slot
+    // numbers, 0.4 ms.) The current lists and the contacts are only read: other members of the team may be
+    // colliding the current pairs meanwhile (findAndCollidePairs()). New pairs get their slots in commitPairs().
     std::vector<uint32_t>& next = m_nextPairContacts;
     next.clear();
     next.reserve(pairs.size());
+    m_nextPairBodies.resize(pairs.size());
+    m_newPairs.clear();
+    m_newPairEnded.clear();
+    m_endedContacts.clear();
     size_t old = 0;
-    for (const BroadPhasePair& p : pairs) {
+    for (size_t i = 0; i < pairs.size(); ++i) {
+        const BroadPhasePair& p = pairs[i];
+        m_nextPairBodies[i] = {p.idA, p.idB};
         while (old < m_pairContacts.size() && m_pairBodies[old] < std::make_pair(p.idA, p.idB))
-            m_freeContacts.push_back(m_pairContacts[old++]);
+            m_endedContacts.push_back(m_pairContacts[old++]);
         if (old < m_pairContacts.size() && sameBodies(p, m_pairBodies[old])) {
             next.push_back(m_pairContacts[old++]);
             continue;
         }
-        uint32_t slot;
-        if (m_freeContacts.empty()) {
-            slot = static_cast<uint32_t>(m_contactPool.size());
-            m_contactPool.emplace_back();
-            m_contactPairs.emplace_back();
-            m_contactTouching.push_back(0);
-        } else {
-            slot = m_freeContacts.back();
-            m_freeContacts.pop_back();
-            m_contactTouching[slot] = 0;
-        }
-        startContact(slot, p.idA, p.idB);
-        next.push_back(slot);
+        m_newPairs.push_back(i);
+        m_newPairEnded.push_back(m_endedContacts.size());
+        next.push_back(kNoSlot);
     }
     while (old < m_pairContacts.size())
-        m_freeContacts.push_back(m_pairContacts[old++]);
-    std::swap(m_pairContacts, next);
-    m_pairBodies.resize(pairs.size());
-    for (size_t i = 0; i < pairs.size(); ++i)
-        m_pairBodies[i] = {pairs[i].idA, pairs[i].idB};
+        m_endedContacts.push_back(m_pairContacts[old++]);
+}
+
+void World::commitPairs() {
+    if (m_pairsChanged) {
+        // Slots of pairs that ended are reused by new pairs, last freed first, as one walk of the merged list freed
+        // and took them before the merge was split from this: a new pair mostly takes the slot of a pair that ended
+        // near it in pair order, the order every later stage visits the contacts in. (Freeing all of them before
+        // taking any hands them out in reverse; no difference in time was measured between the two.)
+        size_t freed = 0;
+        for (size_t k = 0; k < m_newPairs.size(); ++k) {
+            const size_t i = m_newPairs[k];
+            for (; freed < m_newPairEnded[k]; ++freed)
+                m_freeContacts.push_back(m_endedContacts[freed]);
+            uint32_t slot;
+            if (m_freeContacts.empty()) {
+                slot = static_cast<uint32_t>(m_contactPool.size());
+                m_contactPool.emplace_back();
+                m_contactPairs.emplace_back();
+                m_contactTouching.push_back(0);
+            } else {
+                slot = m_freeContacts.back();
+                m_freeContacts.pop_back();
+                m_contactTouching[slot] = 0;
+            }
+            const auto [a, b] = m_nextPairBodies[i];
+            startContact(slot, a, b);
+            m_nextPairContacts[i] = slot;
+        }
+        m_freeContacts.insert(m_freeContacts.end(), m_endedContacts.begin() + static_cast<std::ptrdiff_t>(freed),
+                              m_endedContacts.end());
+        std::swap(m_pairContacts, m_nextPairContacts);
+        std::swap(m_pairBodies, m_nextPairBodies);
+    } else {
+        m_newPairs.clear();
+    }
     m_profile.count(Counter::Pairs, m_pairContacts.size());
 }
 
@@ -441,7 +459,7 @@ void World::collidePair(uint32_t slot, Real margin) {
     c.cachedMargin = margin;
 }
 
-void World::narrowphase() {
+void World::findAndCollidePairs() {
     // Pairs where neither body moves keep their manifold (both asleep, or asleep against an anchor).
     // A pair whose tight boxes are apart by more than its margin along some axis has no contact: the shapes are at
     // least that far apart. The fat boxes of the broadphase overlap far more often than the shapes come within the
@@ -451,33 +469,33 @@ void World::narrowphase() {
     // The clip's speculative separations are lower bounds of the distance, so it could keep a point for a pair that
     // cannot touch within the step; this test drops such points (27 times in 600 frames of a 1,000-box pile).
     const Real dt = 1.0 / m_fps;
-    // Filters pairs [begin, end) into `tests` and collides those that pass; returns how many were tested.
-    const auto collideChunk = [&](size_t begin, size_t end, std::vector<NarrowTest>& tests) {
-        tests.clear();
-        for (size_t i = begin; i < end; ++i) {
-            const auto [a, b] = m_pairBodies[i];
-            if (!m_state.isMoving(a) && !m_state.isMoving(b))
-                continue;
-            const Aabb &boxA = m_bounds[a], &boxB = m_bounds[b];
-            const Vec3 gap = glm::max(boxB.min - boxA.max, boxA.min - boxB.max);
-            const Real apart = std::max({gap.x, gap.y, gap.z});
-            // Most pairs are told apart by a bound of the margin from each body's own speed (|vB - vA| <= |vA| +
-            // |vB|; the factor covers rounding), which costs no square root; the rest by the margin itself.
-            const Real bound = std::min(m_tuning.speculativeDistance + (m_reach[a] + m_reach[b]) * dt,
-                                        m_tuning.speculativeDistance + std::max(m_minExtent[a], m_minExtent[b]));
-            Real margin = 0.0;
-            if (apart > bound * (1.0 + 1e-9) || apart > (margin = pairMargin(a, b))) {
-                const uint32_t slot = m_pairContacts[i];
-                if (m_contactTouching[slot]) {
-                    Contact& c = m_contactPool[slot];
-                    c.manifold.pointCount = 0;
-                    c.cachedMargin = -1.0;
-                    m_contactTouching[slot] = 0;
-                }
-                continue;
+    // Adds pair i of the current list to `tests` if it passes the filter.
+    const auto filter = [&](size_t i, std::vector<NarrowTest>& tests) {
+        const auto [a, b] = m_pairBodies[i];
+        if (!m_state.isMoving(a) && !m_state.isMoving(b))
+            return;
+        const Aabb &boxA = m_bounds[a], &boxB = m_bounds[b];
+        const Vec3 gap = glm::max(boxB.min - boxA.max, boxA.min - boxB.max);
+        const Real apart = std::max({gap.x, gap.y, gap.z});
+        // Most pairs are told apart by a bound of the margin from each body's own speed (|vB - vA| <= |vA| +
+        // |vB|; the factor covers rounding), which costs no square root; the rest by the margin itself.
+        const Real bound = std::min(m_tuning.speculativeDistance + (m_reach[a] + m_reach[b]) * dt,
+                                    m_tuning.speculativeDistance + std::max(m_minExtent[a], m_minExtent[b]));
+        Real margin = 0.0;
+        if (apart > bound * (1.0 + 1e-9) || apart > (margin = pairMargin(a, b))) {
+            const uint32_t slot = m_pairContacts[i];
+            if (m_contactTouching[slot]) {
+                Contact& c = m_contactPool[slot];
+                c.manifold.pointCount = 0;
+                c.cachedMargin = -1.0;
+                m_contactTouching[slot] = 0;
             }
-            tests.push_back({m_pairContacts[i], margin});
+            return;
         }
+        tests.push_back({m_pairContacts[i], margin});
+    };
+    // Collides the pairs in `tests`; returns how many.
+    const auto collideTests = [&](const std::vector<NarrowTest>& tests) {
         // The contacts sit in the pool in no useful order for the cache (about 700 bytes each, some 6,000 pairs in
         // ramps.obj): a few pairs ahead, every line of the next contact is fetched while this one is computed.
         // (Over ramps.obj's first 240 frames the stage went from 389-429 ms to 335-410 ms, in seven interleaved
@@ -493,53 +511,101 @@ void World::narrowphase() {
         }
         return tests.size();
     };
+    const int teamSize = m_team ? m_team->size() : 1;
+    m_narrowLists.resize(static_cast<size_t>(teamSize));
+    for (NarrowList& list : m_narrowLists) {
+        list.tested = 0;
+        list.points = 0;
+        list.touching.clear();
+        list.touchingBodies.clear();
+        list.mayWake.clear();
+    }
+    std::optional<StageTimer> timer;
 
-    // Each pair writes only its own contact, so sharing the pairs out over threads gives identical results. The
-    // members take chunks of pairs as they go, filtering and colliding each: a full SAT costs many times an early
-    // out, and even halves of the list kept one thread waiting for the other. (With the filter a serial pass of its
-    // own before the team's collisions, it took 64-98 us of a step on two threads in ramps.obj and boxes1000,
-    // medians of their first 120 frames.) Batches of 16 tested pairs made the two members fight over the counter
-    // (and over neighbouring touching flags): in large_pyramid at rest, where most manifolds are reused, the stage
-    // took 1.37 ms a step on two threads against 0.82 ms on one; with 64, 0.80-0.89 ms (2026-11-27, frames 60-120).
+    // First the pairs of the last step are collided while the broadphase finds this step's pairs: a pair's manifold
+    // depends only on its two bodies and its own contact, not on the other pairs, and the merge of the pair lists
+    // (mergePairs()) reads only the current lists and writes only the next ones. Pairs that ended are collided for
+    // nothing, which the filter above mostly turns away. On a team, member 0 reinserts the proxies and merges the pair
+    // lists, serial work, while the others collide, and then joins them. (When the team waited for those serial
+    // stretches, ramps' step on two threads took 1.49-1.57 ms, now 1.39-1.44; boxes1000's 3.06-3.32 and 3.02-3.27 ms;
+    // large_pyramid's the same within the noise; the first 120 frames, 45 for large_pyramid, four interleaved runs,
+    // 2026-11-27. The same frames, and the same times on one thread.)
+    //
+    // The collisions are taken in chunks: a full SAT costs many times an early out, and even halves of the list kept
+    // one thread waiting for the other. (With the filter a serial pass of its own before the team's collisions, it
+    // took 64-98 us of a step on two threads in ramps.obj and boxes1000, medians of their first 120 frames.) Batches
+    // of 16 tested pairs made the two members fight over the counter (and over neighbouring touching flags): in
+    // large_pyramid at rest, where most manifolds are reused, the stage took 1.37 ms a step on two threads against
+    // 0.82 ms on one; with 64, 0.80-0.89 ms (2026-11-27, frames 60-120).
     //
     // A team of two takes its chunks from the two ends of the list: member 0 from the front, member 1 from the
     // back, until they meet. Each member then mostly reads the contacts whose manifolds it wrote in the last step
     // (the solver's set-up and storeImpulses() share the touching contacts out in halves, in pair order too), which
     // the other core would have to fetch from this one's cache. (large_pyramid, frames 60-120 on two threads, seven
     // interleaved runs: 0.65-0.85 ms a step against 0.62-1.09 ms, medians 0.74 and 0.88; 2026-11-27.)
-    //
-    // Then each member lists the touching contacts of its half of the pairs, in pair order, and the lists are joined.
-    const size_t pairCount = m_pairContacts.size();
-    const int members = m_team && pairCount >= 2 * kNarrowChunk ? m_team->size() : 1;
-    m_narrowLists.resize(static_cast<size_t>(members));
-    // One thread takes all the pairs as one chunk: it filters every pair before it collides any, so the fetching
-    // ahead runs through the whole list instead of starting again at every chunk. (On one core, ramps' narrowphase
-    // medians were the same within this machine's noise either way: 0.81-0.83 and 0.81-0.86 ms, 2026-11-27.)
-    const size_t chunk = members == 1 ? std::max<size_t>(pairCount, 1) : kNarrowChunk;
-    const size_t chunks = (pairCount + chunk - 1) / chunk;
-    std::atomic<size_t> claimed{0};
-    const bool fromBothEnds = members == 2;
-    const auto job = [&](int member) {
-        NarrowList& mine = m_narrowLists[static_cast<size_t>(member)];
-        mine.tested = 0;
-        // Every claim is one chunk. In a team of two, member 0's k-th claim is chunk k and member 1's is chunk
-        // chunks - 1 - k: with fewer claims than chunks in all, the two never take the same one.
-        for (size_t k = 0;; ++k) {
-            const size_t claim = members == 1 ? k : claimed.fetch_add(1, std::memory_order_relaxed);
-            if (claim >= chunks)
-                break;
-            const size_t at = !fromBothEnds ? claim : member == 0 ? k : chunks - 1 - k;
-            mine.tested += collideChunk(at * chunk, std::min(pairCount, (at + 1) * chunk), mine.tests);
-        }
+    {
+        const size_t pairCount = m_pairContacts.size();
+        const int members = m_team && pairCount >= 2 * kNarrowChunk ? teamSize : 1;
+        // One thread takes all the pairs as one chunk: it filters every pair before it collides any, so the fetching
+        // ahead runs through the whole list instead of starting again at every chunk. (On one core, ramps'
+        // narrowphase medians were the same within this machine's noise either way: 0.81-0.83 and 0.81-0.86 ms,
+        // 2026-11-27.)
+        const size_t chunk = members == 1 ? std::max<size_t>(pairCount, 1) : kNarrowChunk;
+        const size_t chunks = (pairCount + chunk - 1) / chunk;
+        std::atomic<size_t> claimed{0};
+        const bool fromBothEnds = members == 2;
+        const auto job = [&](int member) {
+            if (member == 0) {
+                {
+                    StageTimer t(m_profile, Stage::UpdateBroadphase);
+                    updateBroadphase();
+                }
+                {
+                    // Alone, member 0 can share the broadphase's queries out over the idle team.
+                    StageTimer t(m_profile, Stage::FindPairs);
+                    mergePairs(members == 1 ? teamParallelFor() : BroadPhase::ParallelFor());
+                }
+                timer.emplace(m_profile, Stage::Narrowphase);
+            }
+            NarrowList& mine = m_narrowLists[static_cast<size_t>(member)];
+            // Every claim is one chunk. In a team of two, member 0's k-th claim is chunk k and member 1's is chunk
+            // chunks - 1 - k: with fewer claims than chunks in all, the two never take the same one.
+            for (size_t k = 0;; ++k) {
+                const size_t claim = members == 1 ? k : claimed.fetch_add(1, std::memory_order_relaxed);
+                if (claim >= chunks)
+                    break;
+                const size_t at = !fromBothEnds ? claim : member == 0 ? k : chunks - 1 - k;
+                mine.tests.clear();
+                for (size_t i = at * chunk, end = std::min(pairCount, (at + 1) * chunk); i < end; ++i)
+                    filter(i, mine.tests);
+                mine.tested += collideTests(mine.tests);
+            }
+        };
         if (members > 1)
-            m_team->barrier();
-        // From here on only touching contacts matter: list them once, in pair order. A contact that may wake a
-        // sleeper (below) has a body that is neither moving nor static.
-        mine.touching.clear();
-        mine.touchingBodies.clear();
-        mine.mayWake.clear();
-        mine.points = 0;
+            m_team->run(job);
+        else
+            job(0);
+    }
+    timer.reset();
+    {
+        StageTimer t(m_profile, Stage::FindPairs);
+        commitPairs();
+    }
+
+    // Then the new pairs are collided, and the touching contacts are listed once, in pair order: from here on only
+    // they matter. Each member takes an even part of the pair list. A contact that may wake a sleeper (below) has a
+    // body that is neither moving nor static.
+    timer.emplace(m_profile, Stage::Narrowphase);
+    const size_t pairCount = m_pairContacts.size();
+    const int members = m_team && pairCount >= 2 * kNarrowChunk ? teamSize : 1;
+    const auto list = [&](int member) {
+        NarrowList& mine = m_narrowLists[static_cast<size_t>(member)];
         const auto [begin, end] = ThreadTeam::share(0, pairCount, member, members);
+        mine.tests.clear();
+        for (auto at = std::lower_bound(m_newPairs.begin(), m_newPairs.end(), begin);
+             at != m_newPairs.end() && *at < end; ++at)
+            filter(*at, mine.tests);
+        mine.tested += collideTests(mine.tests);
         for (size_t i = begin; i < end; ++i) {
             const uint32_t slot = m_pairContacts[i];
             if (!m_contactTouching[slot])
@@ -553,25 +619,25 @@ void World::narrowphase() {
         }
     };
     if (members > 1)
-        m_team->run(job);
+        m_team->run(list);
     else
-        job(0);
+        list(0);
     m_touchingContacts.clear();
     m_touchingBodies.clear();
     uint64_t tested = 0, points = 0;
-    for (const NarrowList& list : m_narrowLists) {
-        m_touchingContacts.insert(m_touchingContacts.end(), list.touching.begin(), list.touching.end());
-        m_touchingBodies.insert(m_touchingBodies.end(), list.touchingBodies.begin(), list.touchingBodies.end());
-        tested += list.tested;
-        points += list.points;
+    for (const NarrowList& l : m_narrowLists) {
+        m_touchingContacts.insert(m_touchingContacts.end(), l.touching.begin(), l.touching.end());
+        m_touchingBodies.insert(m_touchingBodies.end(), l.touchingBodies.begin(), l.touchingBodies.end());
+        tested += l.tested;
+        points += l.points;
     }
     m_profile.count(Counter::PairsTested, tested);
 
     // A touching contact between an awake body and a sleeping one wakes the sleeper's island, in pair order (a woken
     // island can wake the next).
     if (m_effects.effects.has(Effect::Sleeping)) {
-        for (const NarrowList& list : m_narrowLists)
-            for (const size_t i : list.mayWake) {
+        for (const NarrowList& l : m_narrowLists)
+            for (const size_t i : l.mayWake) {
                 const auto [a, b] = m_pairBodies[i];
                 const bool movingA = m_state.isMoving(a), movingB = m_state.isMoving(b);
                 if (movingA && !movingB && !m_state.isStatic(b))

@@ -213,8 +213,13 @@ private:
     void startContact(uint32_t slot, uint32_t a, uint32_t b);
 
     void updateBroadphase();
-    void findPairs();
-    void narrowphase();
+    // This step's broadphase pairs into the next lists (m_nextPairContacts with kNoSlot for new pairs,
+    // m_nextPairBodies, m_newPairs, m_endedContacts); reads the current lists and touches no contact.
+    void mergePairs(const BroadPhase::ParallelFor& parallelFor);
+    // Gives the new pairs their slots and makes the next lists current.
+    void commitPairs();
+    // Broadphase and narrowphase: the manifold of every pair within its margin, and the touching contacts.
+    void findAndCollidePairs();
     void buildIslands();
     void solve();
     void solveGroup(std::span<const uint32_t> group, int refinement);
@@ -320,7 +325,7 @@ private:
 
     BroadPhase m_broadPhase;
     // Every broadphase pair's contact lives in a slot of the pool; m_pairContacts lists the slots in pair order,
-    // which is the order every stage visits them in. Slots of ended pairs are reused (see findPairs()).
+    // which is the order every stage visits them in. Slots of ended pairs are reused (see commitPairs()).
     std::vector<Contact> m_contactPool;
     std::vector<ContactPair> m_contactPairs; // per slot of the pool
     std::vector<uint32_t> m_pairContacts;
@@ -341,8 +346,14 @@ private:
     std::vector<uint32_t> m_touchingContacts; // slots of the touching contacts, in pair order, after narrowphase
     // Their bodies, so that islands and groups are found without reading the contacts.
     std::vector<std::pair<uint32_t, uint32_t>> m_touchingBodies;
-    // Scratch of findPairs() and solve(), kept between steps so that a step does not allocate.
+    // Scratch of mergePairs() and solve(), kept between steps so that a step does not allocate.
     std::vector<uint32_t> m_nextPairContacts;
+    std::vector<std::pair<uint32_t, uint32_t>> m_nextPairBodies;
+    std::vector<size_t> m_newPairs;        // indices of the new pairs in the next pair list, ascending
+    std::vector<size_t> m_newPairEnded;    // per new pair: how many pairs had ended before it in the merge
+    std::vector<uint32_t> m_endedContacts; // slots of the pairs that ended
+    bool m_pairsChanged = false;
+    static constexpr uint32_t kNoSlot = UINT32_MAX;
     std::vector<uint32_t> m_group;
     std::vector<uint8_t> m_refinement; // per body: its island's substep multiplier this step, 0 when not moving
     std::vector<Real> m_islandMinMass, m_islandMaxMass;
@@ -351,8 +362,8 @@ private:
     std::vector<uint32_t> m_height;
     bool m_anyHeight = false;
     std::vector<uint32_t> m_solverIndex, m_moving;
-    // Per member of the team in narrowphase(): its touching contacts, the pairs whose contact may wake a sleeper
-    // (their index in the pair list), and its counts.
+    // Per member of the team in findAndCollidePairs(): its touching contacts, the pairs whose contact may wake a
+    // sleeper (their index in the pair list), and its counts.
     struct NarrowTest {
         uint32_t slot;
         Real margin;

@@ -19,7 +19,7 @@ namespace rl {
 // collision manifolds are computed once per step and stay usable across substeps.
 //
 // Records are aligned to their size (alignas(256)): each is four whole cache lines, and none straddles a page. Left to
-// the allocator, the array started 16 bytes into a line in one build and on a page in another, and large_pyramid's
+// the allocator, the array started 48 bytes into a line in one build and on a page in another, and large_pyramid's
 // warm start, solve and relax stages on one pinned CPU took 1.78-1.83, 6.86-6.94 and 3.44-3.48 ms a step against
 // 1.55-1.72, 6.19-6.47 and 3.10-3.28 (frames 5-45). Aligned to lines only, 2.10-2.15, 7.43-7.61 and 3.78-3.89 ms
 // against 2.01-2.11, 7.22-7.44 and 3.66-3.82 aligned to 256 bytes, on a busier host (four interleaved runs,

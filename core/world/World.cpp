@@ -298,6 +298,9 @@ void World::mergePairs(const BroadPhase::ParallelFor& parallelFor) {
     const auto sameBodies = [](const BroadPhasePair& p, const std::pair<uint32_t, uint32_t>& bodies) {
         return p.idA == bodies.first && p.idB == bodies.second;
     };
+    m_newPairs.clear();
+    m_newPairEnded.clear();
+    m_endedContacts.clear();
     m_pairsChanged = !(pairs.size() == m_pairBodies.size() &&
                        std::equal(pairs.begin(), pairs.end(), m_pairBodies.begin(), sameBodies));
     if (!m_pairsChanged)
@@ -311,9 +314,6 @@ void World::mergePairs(const BroadPhase::ParallelFor& parallelFor) {
     next.clear();
     next.reserve(pairs.size());
     m_nextPairBodies.resize(pairs.size());
-    m_newPairs.clear();
-    m_newPairEnded.clear();
-    m_endedContacts.clear();
     size_t old = 0;
     for (size_t i = 0; i < pairs.size(); ++i) {
         const BroadPhasePair& p = pairs[i];
@@ -362,8 +362,6 @@ void World::commitPairs() {
                               m_endedContacts.end());
         std::swap(m_pairContacts, m_nextPairContacts);
         std::swap(m_pairBodies, m_nextPairBodies);
-    } else {
-        m_newPairs.clear();
     }
     m_profile.count(Counter::Pairs, m_pairContacts.size());
 }

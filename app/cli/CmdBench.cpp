@@ -30,6 +30,7 @@ namespace {
 constexpr int kDefaultFrames = 300;
 constexpr int kQuickFrames = 120;
 constexpr int kScalingFrames = 60;
+constexpr int kDefaultRuns = 3;
 
 // What one bench argument names: a library scene or a scene file.
 struct BenchTarget {
@@ -44,6 +45,7 @@ const char* const kRampsScene = RL_RESOURCES_DIR "/scenes/ramps.obj";
 struct BenchResult {
     size_t bodies = 0;
     int frames = 0;
+    int runs = 1;
     double medianMs = 0.0;
     double p95Ms = 0.0;
     double meanMs = 0.0;
@@ -103,13 +105,47 @@ std::string loadAverage() {
     return a + " " + b + " " + c;
 }
 
+// Per-frame step times of one run, wall clock and the stepping thread's CPU time (ms).
+struct FrameTimes {
+    std::vector<double> wallMs, cpuMs;
+};
+
+// Keeps each frame's least time over the repeats of one engine's run. The runs step the same frames bit for bit, so
+// every repeat does the same work; a frame that another job on the machine slowed in one repeat counts at the speed
+// it ran at in another.
+void keepLeast(FrameTimes& best, const FrameTimes& run) {
+    if (best.wallMs.empty()) {
+        best = run;
+        return;
+    }
+    for (size_t f = 0; f < std::min(best.wallMs.size(), run.wallMs.size()); ++f) {
+        best.wallMs[f] = std::min(best.wallMs[f], run.wallMs[f]);
+        best.cpuMs[f] = std::min(best.cpuMs[f], run.cpuMs[f]);
+    }
+}
+
+// The median, p95 and mean of the frames' times.
+void summarize(const FrameTimes& times, BenchResult& out) {
+    std::vector<double> wall = times.wallMs, cpu = times.cpuMs;
+    out.frames = static_cast<int>(wall.size());
+    double total = 0.0;
+    for (double ms : wall)
+        total += ms;
+    out.meanMs = wall.empty() ? 0.0 : total / static_cast<double>(wall.size());
+    std::sort(wall.begin(), wall.end());
+    std::sort(cpu.begin(), cpu.end());
+    out.medianMs = median(wall);
+    out.p95Ms = percentile(wall, 0.95);
+    out.cpuMedianMs = median(cpu);
+}
+
 // Calls step() `frames` times, timing each call (wall and thread CPU), with progress on stderr.
 template <class StepFn>
-void timeSteps(int frames, const QString& label, bool quiet, BenchResult& out, StepFn&& step) {
+FrameTimes timeSteps(int frames, const QString& label, bool quiet, StepFn&& step) {
     using Clock = std::chrono::steady_clock;
-    std::vector<double> stepMs, cpuMs;
-    stepMs.reserve(static_cast<size_t>(frames));
-    cpuMs.reserve(static_cast<size_t>(frames));
+    FrameTimes times;
+    times.wallMs.reserve(static_cast<size_t>(frames));
+    times.cpuMs.reserve(static_cast<size_t>(frames));
     QElapsedTimer clock;
     clock.start();
     qint64 lastReport = 0;
@@ -119,8 +155,8 @@ void timeSteps(int frames, const QString& label, bool quiet, BenchResult& out, S
         const double c0 = threadCpuMs();
         const Clock::time_point start = Clock::now();
         step();
-        stepMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-        cpuMs.push_back(threadCpuMs() - c0);
+        times.wallMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        times.cpuMs.push_back(threadCpuMs() - c0);
         const qint64 now = clock.elapsed();
         if (!quiet && now - lastReport >= (terminal ? 500 : 5000)) {
             lastReport = now;
@@ -131,23 +167,14 @@ void timeSteps(int frames, const QString& label, bool quiet, BenchResult& out, S
     }
     if (!quiet && terminal && lastReport > 0)
         std::fputc('\n', stderr);
-
-    out.frames = frames;
-    double total = 0.0;
-    for (double ms : stepMs)
-        total += ms;
-    out.meanMs = frames > 0 ? total / frames : 0.0;
-    std::sort(stepMs.begin(), stepMs.end());
-    std::sort(cpuMs.begin(), cpuMs.end());
-    out.medianMs = median(stepMs);
-    out.p95Ms = percentile(stepMs, 0.95);
-    out.cpuMedianMs = median(cpuMs);
+    return times;
 }
 
-// Steps the world `frames` times, timing each step; false if a body left the finite numbers.
-bool runWorld(World& world, int frames, const QString& label, bool quiet, BenchResult& out) {
+// Steps the world `frames` times, timing each step; false if a body left the finite numbers. `out` gets the work left
+// at the end, the stage totals and the final state's hash; the times are returned in `times`.
+bool runWorld(World& world, int frames, const QString& label, bool quiet, FrameTimes& times, BenchResult& out) {
     world.resetProfile();
-    timeSteps(frames, label, quiet, out, [&] { world.step(); });
+    times = timeSteps(frames, label, quiet, [&] { world.step(); });
     out.bodies = world.bodyCount();
     const FrameDiagnostics d = world.diagnostics();
     out.awake = d.awakeBodies;
@@ -196,7 +223,7 @@ QString threadsLine(const QString& label, int threads, const BenchResult& thread
 
 QString resultLine(const QString& label, const BenchResult& r) {
     return QString("scene=%1 bodies=%2 frames=%3 median_ms=%4 p95_ms=%5 mean_ms=%6 awake=%7 contacts=%8 "
-                   "broad_ms=%9 narrow_ms=%10 solve_ms=%11 other_ms=%12 cpu_median_ms=%13\n")
+                   "broad_ms=%9 narrow_ms=%10 solve_ms=%11 other_ms=%12 cpu_median_ms=%13 runs=%14\n")
         .arg(label)
         .arg(r.bodies)
         .arg(r.frames)
@@ -209,7 +236,8 @@ QString resultLine(const QString& label, const BenchResult& r) {
         .arg(r.narrowMs, 0, 'f', 1)
         .arg(r.solveMs, 0, 'f', 1)
         .arg(r.otherMs, 0, 'f', 1)
-        .arg(r.cpuMedianMs, 0, 'f', 3);
+        .arg(r.cpuMedianMs, 0, 'f', 3)
+        .arg(r.runs);
 }
 
 // Bullet on the same scene, and RigidLab's cost as a ratio of Bullet's (above 1: RigidLab is slower).
@@ -260,8 +288,10 @@ int runBench(const QStringList& arguments) {
     parser.setApplicationDescription(
         "Step scenes at their default settings and print the wall-clock cost per step, one line per scene:\n"
         "scene= bodies= frames= median_ms= p95_ms= mean_ms= awake= contacts= broad_ms= narrow_ms= solve_ms= "
-        "other_ms= cpu_median_ms=\n(awake and contacts after the last step; the *_ms stage groups are totals over the "
-        "run).\nWhen built with Debian's libbullet-dev, each scene is then stepped in Bullet at its defaults (hull "
+        "other_ms= cpu_median_ms= runs=\n(awake and contacts after the last step; the *_ms stage groups are totals "
+        "over "
+        "the run, the least over the runs; the step times are each frame's least over the runs, see --runs).\nWhen "
+        "built with Debian's libbullet-dev, each scene is then stepped in Bullet at its defaults (hull "
         "against hull, same fps, same materials) and two more lines follow: bullet scene=... and ratio scene=... "
         "rigidlab/bullet median= cpu_median= mean= (above 1: RigidLab is slower).\n"
         "Without scenes, runs stack20, pyramid20, ramps and boxes1000 for 120 frames.\nNamed scenes: " +
@@ -281,6 +311,12 @@ int runBench(const QStringList& arguments) {
                       "and a line threads scene=... one_thread_median_ms= speedup_median= speedup_mean= identical= "
                       "compares them (identical: the same final state, bit for bit).",
                       "t"});
+    parser.addOption({"runs",
+                      QString("Runs of each engine on each scene (default %1), taking turns; each frame counts at its "
+                              "least time over the runs, which all step the same frames, so that another job on the "
+                              "machine slowing one run does not count. 1 times a single run.")
+                          .arg(kDefaultRuns),
+                      "r"});
     parser.addOption({"no-bullet", "Do not run Bullet on the same scenes."});
     parser.addOption({"no-sleep", "Keep every body awake in both engines (RigidLab: effects auto,-sleeping; Bullet: "
                                   "DISABLE_DEACTIVATION)."});
@@ -299,15 +335,24 @@ int runBench(const QStringList& arguments) {
         }
         frames = n;
     }
-    int threads = 1;
-    if (parser.isSet("threads")) {
+    // A whole-number option from 1 to `most`: its value, `fallback` if it is not given, nothing (after the message)
+    // if it is out of range.
+    const auto wholeOption = [&](const char* name, int fallback, int most) -> std::optional<int> {
+        if (!parser.isSet(name))
+            return fallback;
         bool ok = false;
-        threads = parser.value("threads").toInt(&ok);
-        if (!ok || threads <= 0 || threads > 64) {
-            printError(QStringLiteral("rigidlab-cli bench: --threads takes a whole number from 1 to 64"));
-            return kExitUsage;
+        const int n = parser.value(name).toInt(&ok);
+        if (!ok || n <= 0 || n > most) {
+            printError(QString("rigidlab-cli bench: --%1 takes a whole number from 1 to %2").arg(name).arg(most));
+            return std::nullopt;
         }
-    }
+        return n;
+    };
+    const std::optional<int> threadsOption = wholeOption("threads", 1, 64);
+    const std::optional<int> runsOption = wholeOption("runs", kDefaultRuns, 100);
+    if (!threadsOption || !runsOption)
+        return kExitUsage;
+    const int threads = *threadsOption, repeats = *runsOption;
     const bool scaling = parser.isSet("scaling");
     const bool quiet = parser.isSet("quiet");
     const QStringList positional = parser.positionalArguments();
@@ -366,33 +411,75 @@ int runBench(const QStringList& arguments) {
             }
             scene = std::move(imported).value();
         }
-        Result<World> created = World::create(scene, options);
-        if (!created) {
-            printError(created.error().toString());
-            failed = true;
-            continue;
-        }
         if (!quiet)
-            printError(
-                QString("bench: %1: %2 bodies, %3 frames").arg(label).arg(scene.bodies.size()).arg(target.frames));
-        BenchResult result;
-        if (!runWorld(created.value(), target.frames, label, quiet, result)) {
+            printError(QString("bench: %1: %2 bodies, %3 frames, %4 runs of each engine")
+                           .arg(label)
+                           .arg(scene.bodies.size())
+                           .arg(target.frames)
+                           .arg(repeats));
+        // The engines take turns (the threaded world, then one thread, then Bullet) `repeats` times over, and each
+        // frame counts at its least time over the repeats (keepLeast()); each repeat must end in the same state.
+        WorldOptions single = options;
+        single.threads = 1;
+        BenchResult result, one, reference;
+        FrameTimes ourTimes, oneTimes, bulletTimes;
+        bool ok = true;
+        const auto runOurs = [&](const WorldOptions& o, const QString& runLabel, int r, FrameTimes& best,
+                                 BenchResult& kept) {
+            Result<World> created = World::create(scene, o);
+            if (!created) {
+                printError(created.error().toString());
+                return false;
+            }
+            BenchResult run;
+            FrameTimes times;
+            if (!runWorld(created.value(), target.frames, runLabel, quiet, times, run))
+                return false;
+            keepLeast(best, times);
+            if (r == 0) {
+                kept = run;
+                return true;
+            }
+            kept.broadMs = std::min(kept.broadMs, run.broadMs);
+            kept.narrowMs = std::min(kept.narrowMs, run.narrowMs);
+            kept.solveMs = std::min(kept.solveMs, run.solveMs);
+            kept.otherMs = std::min(kept.otherMs, run.otherMs);
+            if (run.stateHash != kept.stateHash) {
+                printError(runLabel + ": the run ended in a different state from the first run");
+                return false;
+            }
+            return true;
+        };
+        for (int r = 0; r < repeats && ok; ++r) {
+            const QString run = repeats > 1 ? QString(", run %1/%2").arg(r + 1).arg(repeats) : QString();
+            ok = runOurs(options, label + run, r, ourTimes, result);
+            if (ok && threads > 1)
+                ok = runOurs(single, label + " (1 thread" + run + ")", r, oneTimes, one);
+            if (ok && withBullet) {
+                std::string error;
+                std::unique_ptr<bench::BulletReference> bullet = bench::BulletReference::create(scene, noSleep, &error);
+                if (!bullet) {
+                    printError(label + ": Bullet: " + QString::fromStdString(error));
+                    ok = false;
+                    break;
+                }
+                keepLeast(bulletTimes,
+                          timeSteps(target.frames, label + " (Bullet" + run + ")", quiet, [&] { bullet->step(); }));
+                reference.bodies = scene.bodies.size();
+                reference.awake = bullet->awakeBodies();
+                reference.contacts = bullet->contactPoints();
+            }
+        }
+        if (!ok) {
             failed = true;
             continue;
         }
+        summarize(ourTimes, result);
+        result.runs = repeats;
         printOut(resultLine(label, result));
-        std::fflush(stdout);
         if (threads > 1) {
-            WorldOptions single = options;
-            single.threads = 1;
-            Result<World> alone = World::create(scene, single);
-            BenchResult one;
-            if (!alone || !runWorld(alone.value(), target.frames, label + " (1 thread)", quiet, one)) {
-                failed = true;
-                continue;
-            }
+            summarize(oneTimes, one);
             printOut(threadsLine(label, threads, result, one));
-            std::fflush(stdout);
             if (one.stateHash != result.stateHash) {
                 printError(label + ": the run on " + QString::number(threads) +
                            " threads ended in a different state from the run on 1 thread");
@@ -400,21 +487,10 @@ int runBench(const QStringList& arguments) {
             }
         }
         if (withBullet) {
-            std::string error;
-            std::unique_ptr<bench::BulletReference> bullet = bench::BulletReference::create(scene, noSleep, &error);
-            if (!bullet) {
-                printError(label + ": Bullet: " + QString::fromStdString(error));
-                failed = true;
-                continue;
-            }
-            BenchResult reference;
-            reference.bodies = scene.bodies.size();
-            timeSteps(target.frames, label + " (Bullet)", quiet, reference, [&] { bullet->step(); });
-            reference.awake = bullet->awakeBodies();
-            reference.contacts = bullet->contactPoints();
+            summarize(bulletTimes, reference);
             printOut(bulletLines(label, result, reference));
-            std::fflush(stdout);
         }
+        std::fflush(stdout);
         if (scaling) {
             size_t dynamicBodies = 0;
             for (const BodyDef& b : scene.bodies)

@@ -52,6 +52,23 @@ private slots:
         }
         // The cubes of the stack rest on each other and on the floor.
         QVERIFY(f.value("contacts").toInt() > 0);
+        QCOMPARE(f.value("runs"), QStringLiteral("3")); // the default
+    }
+
+    // --runs R steps each engine R times, taking turns, and times each frame at its least over the runs; the line
+    // says how many, progress names each run, and every run must end in the state of the first.
+    void runsAreCountedAndNamed() {
+        const Run r = runCli({"bench", "stack20", "--frames", "8", "--runs", "2", "--threads", "2", "--no-bullet"});
+        QCOMPARE(r.exitCode, 0);
+        const QStringList lines = QString::fromUtf8(r.out).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 2);
+        QCOMPARE(fields(lines[0]).value("runs"), QStringLiteral("2"));
+        QCOMPARE(fields(lines[0]).value("frames"), QStringLiteral("8"));
+        QCOMPARE(fields(lines[1]).value("identical"), QStringLiteral("yes"));
+        QVERIFY(r.err.contains("2 runs of each engine"));
+        const Run single = runCli({"bench", "stack20", "--frames", "4", "--runs", "1", "--quiet", "--no-bullet"});
+        QCOMPARE(single.exitCode, 0);
+        QCOMPARE(fields(QString::fromUtf8(single.out).trimmed()).value("runs"), QStringLiteral("1"));
     }
 
     // With --threads above 1 each scene runs again on one thread, and a line gives the speedup and whether the two
@@ -147,6 +164,9 @@ private slots:
         QTest::newRow("frames not a number") << QStringList{"bench", "stack20", "--frames", "ten"};
         QTest::newRow("threads zero") << QStringList{"bench", "stack20", "--threads", "0"};
         QTest::newRow("unknown option") << QStringList{"bench", "--bogus"};
+        QTest::newRow("runs zero") << QStringList{"bench", "stack20", "--runs", "0"};
+        QTest::newRow("runs not a number") << QStringList{"bench", "stack20", "--runs", "two"};
+        QTest::newRow("runs too many") << QStringList{"bench", "stack20", "--runs", "101"};
         QTest::newRow("scaling with scenes") << QStringList{"bench", "--scaling", "stack20"};
     }
     void usageErrors() {

@@ -22,8 +22,7 @@ namespace {
 // of a sweep is below the tolerance times the manifold's total impulse.
 constexpr int kRestitutionPasses = 32;
 constexpr Real kRestitutionTolerance = 1e-4;
-// A speculative point this far apart (m) weighs a quarter in the friction centre: the speculative distance.
-constexpr Real kCenterFalloff = 0.02;
+constexpr Real kCenterFalloff = ContactSolver::kCenterFalloff;
 
 Vec3 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec3& rA, const Vec3& rB) {
     return (b.v + glm::cross(b.w, rB)) - (a.v + glm::cross(a.w, rA));
@@ -103,7 +102,9 @@ inline void applyRowT(SolverBody& a, SolverBody& b, const Inverse& ia, const Inv
     }
 }
 
-// One manifold's constraint, for one step (see prepare()).
+// One manifold's constraint, for one step (see prepare()). ContactSolver::setUpBatch() (ContactSolverWide.cpp) does
+// the same for a batch's W constraints at once where no records are kept: a change here goes there too
+// (tst_contactsolver's vectorSetUpGivesTheScalarNumbers compares the two).
 void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, uint32_t indexB, Real friction,
                      Real restitution, ContactSolver::Hold held, std::span<const SolverBody> bodies,
                      std::span<const Vec3> centers, Real h, const ContactSolverSettings& settings) {
@@ -346,6 +347,7 @@ void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bo
 }
 
 int ContactSolver::s_widestLanes = 8;
+bool ContactSolver::s_wideSetUp = true;
 
 void ContactSolver::buildBatches(const SetUpInputs& inputs, const ParallelFor& parallelFor) {
     m_batchesAhead = false;
@@ -435,6 +437,11 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
     store.maxImpulse.resize(maxImpulse ? pointTotal : 0);
     m_laneOf.resize(m_count);
     m_order.resize(m_count);
+    // W constraints at a time where no whole records are kept (the vector set-up writes only the batches). Set up
+    // one by one, large_pyramid's prepare_contacts took 4.13-4.49 ms a step on one thread and 2.32-2.46 on two; in
+    // vectors 3.25-3.41 and 1.83-1.85 (frames 5-45, each frame's least of three runs, two interleaved runs of each
+    // build, 2026-11-28). The frames are the same.
+    const bool wideSetUp = s_wideSetUp && !m_kept;
     shareOut(parallelFor, layout.size(), [&](size_t begin, size_t end) {
         for (size_t b = begin; b < end; ++b) {
             const BatchLayout& at = layout[b];
@@ -453,6 +460,8 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
                     }
                 }
             }
+            if (wideSetUp && (W == 8 ? setUpBatch8(inputs, b) : setUpBatch4(inputs, b)))
+                continue;
             // Lanes past at.lanes stay empty: no constraint, bodies 0, zero masses and impulses.
             Batch<W>& batch = batches[b];
             std::memset(static_cast<void*>(&batch), 0, sizeof(Batch<W>));

@@ -121,6 +121,8 @@ struct ContactConstraint {
 class ContactSolver {
 public:
     static constexpr uint8_t kHoldA = 1, kHoldB = 2;
+    // A speculative point this far apart (m) weighs a quarter in the friction centre: the speculative distance.
+    static constexpr Real kCenterFalloff = 0.02;
     // A side of a manifold held for its constraint (prepare()): kHoldA, kHoldB or 0 for none, and the scale of that
     // side's inverse mass and inertia (0: held still).
     struct Hold {
@@ -222,6 +224,10 @@ public:
     // 4 keeps every solver's batches to four lanes; 8 (the default) lets them have eight where the CPU has AVX-512.
     // For tests, which compare the two widths; it applies to the next prepare().
     static void setWidestLanes(int lanes) { s_widestLanes = lanes; }
+    // Where no whole records are kept (no restitution), the batches are set up W constraints at a time in vectors
+    // (ContactSolverWide.cpp), with the same numbers as setUpConstraint(). For tests, which compare the two: false
+    // sets every constraint up alone; it applies to the next prepare().
+    static void setWideSetUp(bool on) { s_wideSetUp = on; }
 
     // The whole constraint records, in manifold order, with the impulses of the last sweep. prepare() keeps them only
     // when asked to (keepConstraints()) or when restitution is on (its pass reads them); else this is empty. The
@@ -326,6 +332,13 @@ private:
     void warmStartBatches(BatchStore<W>& store, std::span<SolverBody> bodies, size_t begin, size_t end);
     template <int W, bool kMaxImpulse>
     void solveBatches(BatchStore<W>& store, std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
+    // Sets batch b's constraints up in its lanes, all W at once, and the constraints' m_order and m_laneOf entries
+    // (ContactSolverWide.cpp); only where no whole records are kept. False, having written nothing, in a build
+    // without vector types (setUpConstraint() then sets them up one by one).
+    template <int W>
+    bool setUpBatch(BatchStore<W>& store, const SetUpInputs& inputs, size_t b);
+    bool setUpBatch4(const SetUpInputs& inputs, size_t b);
+    bool setUpBatch8(const SetUpInputs& inputs, size_t b);
     size_t batchCount() const { return m_width == 8 ? m_store8.batches.size() : m_store4.batches.size(); }
     void buildBatches(const SetUpInputs& inputs, const ParallelFor& parallelFor);
     // Copies the batches' impulses and impact records back to m_constraints, if a batched sweep ran since and the
@@ -353,6 +366,7 @@ private:
     BatchStore<8> m_store8;                  // when it is 8
     int m_width = 4;
     static int s_widestLanes;            // 8, or 4 to keep to four lanes
+    static bool s_wideSetUp;             // setWideSetUp()
     mutable bool m_batchesAhead = false; // the batches hold newer impulses than m_constraints
     ContactSolverSettings m_settings;
     Real m_inverseH = 0.0;

@@ -609,6 +609,259 @@ RL_WIDE8 void ContactSolver::solveBatches8(std::span<SolverBody> bodies, bool us
         solveBatches<8, false>(m_store8, bodies, useBias, begin, end);
 }
 
+#if defined(__GNUC__) && !defined(__clang__)
+namespace {
+
+// x rounded to the nearest float, per lane: what prepare()'s roundedToFloat() gives each lane.
+template <int W>
+RL_LANES_INLINE typename Vec<W>::V rounded(const typename Vec<W>::V& x) {
+    return __builtin_convertvector(__builtin_convertvector(x, typename Vec<W>::F), typename Vec<W>::V);
+}
+template <int W>
+RL_LANES_INLINE L3<typename Vec<W>::V> rounded(const L3<typename Vec<W>::V>& v) {
+    return {rounded<W>(v.x), rounded<W>(v.y), rounded<W>(v.z)};
+}
+template <class V, class Mask>
+RL_LANES_INLINE L3<V> select(const Mask& m, const L3<V>& x, const L3<V>& y) {
+    return {select(m, x.x, y.x), select(m, x.y, y.y), select(m, x.z, y.z)};
+}
+// Stores x, whose lanes hold floats already, in float lanes.
+template <int W>
+RL_LANES_INLINE void putFloat(ContactSolver::FloatLanes<W>& lanes, const typename Vec<W>::V& x) {
+    const typename Vec<W>::F f = __builtin_convertvector(x, typename Vec<W>::F);
+    std::memcpy(lanes.v, &f, sizeof f);
+}
+template <int W>
+RL_LANES_INLINE void putFloat(ContactSolver::FloatLanes<W>* lanes, const L3<typename Vec<W>::V>& v) {
+    putFloat<W>(lanes[0], v.x);
+    putFloat<W>(lanes[1], v.y);
+    putFloat<W>(lanes[2], v.z);
+}
+// glm's matrix times a scalar: each element times it.
+template <class V>
+RL_LANES_INLINE M3<V> scaled(const M3<V>& a, const V& s) {
+    M3<V> r;
+    for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k)
+            r.m[c][k] = a.m[c][k] * s;
+    return r;
+}
+
+} // namespace
+#endif
+
+// setUpConstraint() (ContactSolver.cpp) for the W constraints of batch b at once: the same operations in the same
+// order in every lane, so the same numbers, and the restitution speeds, which no sweep reads, left out. The lanes are
+// read from the manifolds and bodies one by one; empty lanes and point slots beyond a lane's points compute on zeros
+// and are stored as zeros, as the scalar fill leaves them.
+template <int W>
+RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUpInputs& in, size_t b) {
+#if defined(__GNUC__) && !defined(__clang__)
+    using V = typename Vec<W>::V;
+    using Mask = typename Vec<W>::Mask;
+    const BatchLayout& at = m_batchLayout[b];
+    Batch<W>& batch = store.batches[b];
+    BatchScales<W>& scales = store.scales[b];
+    std::memset(static_cast<void*>(&batch), 0, sizeof(Batch<W>));
+    std::memset(static_cast<void*>(&scales), 0, sizeof(BatchScales<W>));
+    batch.firstPoint = at.firstPoint;
+    batch.pointCount = at.pointCount;
+
+    static const Manifold kNone{};
+    const Manifold* manifold[W];
+    uint32_t index[W];
+    V used, pointCount, stillA, stillB; // 1 or 0 per lane
+    V scaleA, scaleB, frictionIn, invMassA, invMassB, twistImpulseIn;
+    M3<V> inertiaA, inertiaB;
+    L3<V> normalIn, centreA, centreB, vA, wA, vB, wB, frictionImpulseIn;
+    L3<V> position[4];
+    V separation[4], impulseIn[4];
+    const auto setLane = [](L3<V>& lanes, int l, const Vec3& v) {
+        lanes.x[l] = v.x;
+        lanes.y[l] = v.y;
+        lanes.z[l] = v.z;
+    };
+    for (int l = 0; l < W; ++l) {
+        const bool inUse = static_cast<uint32_t>(l) < at.lanes;
+        const uint32_t i = inUse ? m_solveOrder[at.first + static_cast<uint32_t>(l)] : 0;
+        const Manifold& m = inUse ? *in.manifolds[i] : kNone;
+        const uint32_t a = inUse ? in.indexA[i] : 0, bb = inUse ? in.indexB[i] : 0;
+        index[l] = i;
+        manifold[l] = &m;
+        batch.bodyA[l] = a;
+        batch.bodyB[l] = bb;
+        used[l] = inUse ? 1.0 : 0.0;
+        pointCount[l] = inUse ? m.pointCount : 0;
+        stillA[l] = a == 0 ? 1.0 : 0.0;
+        stillB[l] = bb == 0 ? 1.0 : 0.0;
+        const Hold held = inUse && !in.held.empty() ? in.held[i] : Hold{};
+        scaleA[l] = held.side == kHoldA ? held.scale : 1.0;
+        scaleB[l] = held.side == kHoldB ? held.scale : 1.0;
+        // (A double past a float's range has no float to round to: see setUpConstraint().)
+        frictionIn[l] = inUse ? std::min(in.friction[i], Real(1e30)) : 0.0;
+        const SolverBody& bodyA = in.bodies[a];
+        const SolverBody& bodyB = in.bodies[bb];
+        invMassA[l] = bodyA.invMass;
+        invMassB[l] = bodyB.invMass;
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 3; ++k) {
+                inertiaA.m[c][k][l] = bodyA.invInertia[c][k];
+                inertiaB.m[c][k][l] = bodyB.invInertia[c][k];
+            }
+        setLane(vA, l, bodyA.v);
+        setLane(wA, l, bodyA.w);
+        setLane(vB, l, bodyB.v);
+        setLane(wB, l, bodyB.w);
+        setLane(centreA, l, in.centers[a]);
+        setLane(centreB, l, in.centers[bb]);
+        setLane(normalIn, l, m.normal);
+        for (int k = 0; k < 4; ++k) {
+            setLane(position[k], l, m.points[k].position);
+            separation[k][l] = m.points[k].separation;
+            impulseIn[k][l] = m.points[k].normalImpulse;
+        }
+        setLane(frictionImpulseIn, l, m.frictionImpulse);
+        twistImpulseIn[l] = m.twistImpulse;
+    }
+
+    const V zero = splat<W>(0.0), one = splat<W>(1.0);
+    const Mask inUse = used > zero;
+    const L3<V> zero3{zero, zero, zero};
+    const L3<V> normal = rounded<W>(normalIn);
+    // tangentBasis(): the axis least aligned with the normal, normalised as glm does (times 1 / sqrt).
+    const Mask alongX = select(normal.x < zero, -normal.x, normal.x) >= splat<W>(0.57735);
+    const L3<V> u{select(alongX, normal.y, zero), select(alongX, -normal.x, normal.z), select(alongX, zero, -normal.y)};
+    const L3<V> t0 = (one / sqrtOf<W>(dot(u, u))) * u;
+    const L3<V> tangent[2] = {rounded<W>(t0), rounded<W>(cross(normal, t0))};
+    const V friction = rounded<W>(frictionIn);
+    const V massA = invMassA * scaleA, massB = invMassB * scaleB;
+    const M3<V> inverseA = scaled(inertiaA, scaleA), inverseB = scaled(inertiaB, scaleB);
+    const Mask still = (stillA > zero) | (stillB > zero);
+    const L3<V> anchorOffset = select(still, zero3, rounded<W>(centreA - centreB));
+    const L3<V> anchorBase = select(stillA > zero, centreB, centreA);
+
+    const bool warm = m_settings.warmStarting;
+    const V approaching = splat<W>(-m_settings.restitutionThreshold);
+    L3<V> rA[4], rB[4];
+    V baseSeparation[4], mass[4], impulse[4], leverArm[4];
+    Mask valid[4];
+    Mask impact = zero < zero;
+    for (uint32_t k = 0; k < at.pointCount; ++k) {
+        valid[k] = splat<W>(static_cast<Real>(k)) < pointCount;
+        rA[k] = rounded<W>(position[k] - anchorBase);
+        rB[k] = rounded<W>(rA[k] + anchorOffset);
+        baseSeparation[k] = rounded<W>(separation[k] - dot(rB[k] - rA[k], normal));
+        const L3<V> angularA = cross(rA[k], normal), angularB = cross(rB[k], normal);
+        const V normalK = ((massA + massB) + dot(angularA, inverseA * angularA)) + dot(angularB, inverseB * angularB);
+        mass[k] = select(normalK > zero, rounded<W>(one / normalK), zero);
+        impulse[k] = warm ? impulseIn[k] : zero;
+        const V relative = dot(normal, (vB + cross(wB, rB[k])) - (vA + cross(wA, rA[k])));
+        impact = impact | (valid[k] & (relative < approaching));
+    }
+
+    // The friction centre, weighted as setUpConstraint() weighs it.
+    L3<V> centerA = zero3, centerB = zero3;
+    V weights = zero;
+    const V falloff = splat<W>(kCenterFalloff);
+    for (uint32_t k = 0; k < at.pointCount; ++k) {
+        const V gap = one + maxOf(separation[k], zero) / falloff;
+        const V w = one / (gap * gap);
+        centerA = select(valid[k], centerA + w * rA[k], centerA);
+        centerB = select(valid[k], centerB + w * rB[k], centerB);
+        weights = select(valid[k], weights + w, weights);
+    }
+    const Mask weighed = weights > zero;
+    centerA =
+        rounded<W>(select(weighed, L3<V>{centerA.x / weights, centerA.y / weights, centerA.z / weights}, centerA));
+    centerB =
+        rounded<W>(select(weighed, L3<V>{centerB.x / weights, centerB.y / weights, centerB.z / weights}, centerB));
+    for (uint32_t k = 0; k < at.pointCount; ++k) {
+        const L3<V> arm = rA[k] - centerA;
+        leverArm[k] = rounded<W>(sqrtOf<W>(dot(arm, arm)));
+    }
+    const L3<V> aA0 = cross(centerA, tangent[0]), aA1 = cross(centerA, tangent[1]);
+    const L3<V> aB0 = cross(centerB, tangent[0]), aB1 = cross(centerB, tangent[1]);
+    const L3<V> iA1 = inverseA * aA1, iB1 = inverseB * aB1;
+    const V k00 = ((massA + massB) + dot(aA0, inverseA * aA0)) + dot(aB0, inverseB * aB0);
+    const V k11 = ((massA + massB) + dot(aA1, iA1)) + dot(aB1, iB1);
+    const V k01 = dot(aA0, iA1) + dot(aB0, iB1);
+    const V det = k00 * k11 - k01 * k01;
+    const V inverseDet = select(det > zero, one / det, zero);
+    const V twist = dot(normal, inverseA * normal) + dot(normal, inverseB * normal);
+    const V twistMass = select(twist > zero, rounded<W>(one / twist), zero);
+    const Mask warmFriction = warm && m_settings.friction ? friction > zero : zero < zero;
+
+    // The batch, with empty lanes zero.
+    const auto keep = [&](const V& x) { return select(inUse, x, zero); };
+    const auto keep3 = [&](const L3<V>& x) { return select(inUse, x, zero3); };
+    putFloat<W>(batch.normal, keep3(normal));
+    putFloat<W>(batch.tangent[0], keep3(tangent[0]));
+    putFloat<W>(batch.tangent[1], keep3(tangent[1]));
+    putFloat<W>(batch.friction, keep(friction));
+    put<W>(scales.a, keep(scaleA));
+    put<W>(scales.b, keep(scaleB));
+    for (uint32_t l = 0; l < at.lanes; ++l)
+        batch.holds = batch.holds || scaleA[l] != 1.0 || scaleB[l] != 1.0;
+    putFloat<W>(batch.anchorOffset, keep3(anchorOffset));
+    putFloat<W>(batch.centerA, keep3(centerA));
+    putFloat<W>(batch.centerB, keep3(centerB));
+    putFloat<W>(batch.frictionMass[0], keep(rounded<W>(k11 * inverseDet)));
+    putFloat<W>(batch.frictionMass[1], keep(rounded<W>(-k01 * inverseDet)));
+    putFloat<W>(batch.frictionMass[2], keep(rounded<W>(k00 * inverseDet)));
+    putFloat<W>(batch.twistMass, keep(twistMass));
+    put<W>(batch.frictionImpulse[0], select(warmFriction, dot(frictionImpulseIn, tangent[0]), zero));
+    put<W>(batch.frictionImpulse[1], select(warmFriction, dot(frictionImpulseIn, tangent[1]), zero));
+    put<W>(batch.twistImpulse, select(warmFriction, twistImpulseIn, zero));
+    // The points in manifold order; an impact is solved deepest point first (setUpConstraint()), so its lane's
+    // points are then put in that order.
+    for (uint32_t k = 0; k < at.pointCount; ++k) {
+        BatchPoint<W>& q = store.points[at.firstPoint + k];
+        const Mask here = valid[k];
+        putFloat<W>(q.rA, select(here, rA[k], zero3));
+        putFloat<W>(q.baseSeparation, select(here, baseSeparation[k], zero));
+        putFloat<W>(q.mass, select(here, mass[k], zero));
+        putFloat<W>(q.leverArm, select(here, leverArm[k], zero));
+        put<W>(q.impulse, select(here, impulse[k], zero));
+    }
+    for (uint32_t l = 0; l < at.lanes; ++l) {
+        const uint32_t i = index[l];
+        const Manifold& m = *manifold[l];
+        std::array<uint8_t, 4>& order = m_order[i];
+        for (int k = 0; k < 4; ++k)
+            order[static_cast<size_t>(k)] = static_cast<uint8_t>(k);
+        m_laneOf[i] = static_cast<uint32_t>(b * W + l);
+        if (impact[l] == 0)
+            continue;
+        std::stable_sort(order.begin(), order.begin() + m.pointCount,
+                         [&](uint8_t x, uint8_t y) { return m.points[x].separation < m.points[y].separation; });
+        for (int k = 0; k < m.pointCount; ++k) {
+            const uint8_t from = order[static_cast<size_t>(k)];
+            BatchPoint<W>& q = store.points[at.firstPoint + static_cast<uint32_t>(k)];
+            q.rA[0].v[l] = static_cast<float>(rA[from].x[l]);
+            q.rA[1].v[l] = static_cast<float>(rA[from].y[l]);
+            q.rA[2].v[l] = static_cast<float>(rA[from].z[l]);
+            q.baseSeparation.v[l] = static_cast<float>(baseSeparation[from][l]);
+            q.mass.v[l] = static_cast<float>(mass[from][l]);
+            q.leverArm.v[l] = static_cast<float>(leverArm[from][l]);
+            q.impulse.v[l] = impulse[from][l];
+        }
+    }
+    return true;
+#else
+    (void)store;
+    (void)in;
+    (void)b;
+    return false;
+#endif
+}
+
+RL_WIDE4 bool ContactSolver::setUpBatch4(const SetUpInputs& inputs, size_t b) {
+    return setUpBatch(m_store4, inputs, b);
+}
+RL_WIDE8 bool ContactSolver::setUpBatch8(const SetUpInputs& inputs, size_t b) {
+    return setUpBatch(m_store8, inputs, b);
+}
+
 void ContactSolver::warmStartBatchRange(std::span<SolverBody> bodies, size_t begin, size_t end) {
     if (!m_settings.warmStarting)
         return;

@@ -151,6 +151,43 @@ std::vector<uint8_t> halves(size_t bodyCount) {
     return part;
 }
 
+// makeProblem()'s problem, sides held if `holds`, with its bodies moved and turned since the step began (dp, dR).
+Problem movedProblem(int bodies, int constraints, bool chain, bool holds, unsigned seed) {
+    Problem p = makeProblem(bodies, constraints, chain, seed);
+    if (holds)
+        holdSome(p);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<Real> u(-0.01, 0.01);
+    for (size_t i = 1; i < p.bodies.size(); ++i) {
+        p.bodies[i].dp = Vec3(u(rng), u(rng), u(rng));
+        p.bodies[i].dR = glm::mat3_cast(glm::angleAxis(10.0 * u(rng), glm::normalize(Vec3(u(rng), 0.01, u(rng)))));
+    }
+    return p;
+}
+
+// A row of batchesGiveTheSequentialNumbers_data(): its problem (movedProblem()) and the bodies' parts if it has
+// them. Sets the lanes the row asks for.
+struct Row {
+    Problem problem;
+    std::vector<uint8_t> part;
+    bool parts = false, chain = false;
+    int constraints = 0;
+    std::span<const uint8_t> partSpan() const {
+        return parts ? std::span<const uint8_t>(part) : std::span<const uint8_t>();
+    }
+};
+Row fetchRow(unsigned seed) {
+    QFETCH(int, bodies);
+    QFETCH(int, constraints);
+    QFETCH(bool, chain);
+    QFETCH(bool, parts);
+    QFETCH(bool, holds);
+    QFETCH(int, lanes);
+    ContactSolver::setWidestLanes(lanes);
+    return {movedProblem(bodies, constraints, chain, holds, seed), halves(static_cast<size_t>(std::max(bodies, 1))),
+            parts, chain, constraints};
+}
+
 // The segment a constraint belongs to: the part of its moving bodies, or the boundary.
 size_t segmentOf(const Problem& p, const std::vector<uint8_t>& part, size_t c) {
     const uint32_t a = p.indexA[c], b = p.indexB[c];
@@ -262,24 +299,10 @@ private slots:
         }
     }
     void batchesGiveTheSequentialNumbers() {
-        QFETCH(int, bodies);
-        QFETCH(int, constraints);
-        QFETCH(bool, chain);
-        QFETCH(bool, parts);
-        QFETCH(bool, holds);
-        QFETCH(int, lanes);
-        ContactSolver::setWidestLanes(lanes);
-        Problem p = makeProblem(bodies, constraints, chain, 5);
-        if (holds)
-            holdSome(p);
-        const std::vector<uint8_t> part = halves(static_cast<size_t>(bodies));
-        const std::span<const uint8_t> partSpan = parts ? std::span<const uint8_t>(part) : std::span<const uint8_t>();
-        std::mt19937 rng(3);
-        std::uniform_real_distribution<Real> u(-0.01, 0.01);
-        for (size_t i = 1; i < p.bodies.size(); ++i) {
-            p.bodies[i].dp = Vec3(u(rng), u(rng), u(rng));
-            p.bodies[i].dR = glm::mat3_cast(glm::angleAxis(10.0 * u(rng), glm::normalize(Vec3(u(rng), 0.01, u(rng)))));
-        }
+        const Row row = fetchRow(5);
+        const Problem& p = row.problem;
+        const std::span<const uint8_t> partSpan = row.partSpan();
+        const int constraints = row.constraints;
         std::vector<SolverBody> sequential = p.bodies, batched = p.bodies;
         ContactSolver a, b;
         a.keepConstraints(true); // the sequential sweeps work on the records (restitution, on here, keeps them too)
@@ -406,6 +429,67 @@ private slots:
         }
         ContactSolver::setWidestLanes(8);
         QVERIFY(changed > 100); // the sweeps changed most points' impulses (203 manifolds, 507 points)
+    }
+
+    // Without restitution the batches are set up eight (or four) constraints at a time in vectors; that set-up gives
+    // the numbers of setUpConstraint(), one constraint at a time, to the bit: the same velocities and stored impulses
+    // through warm starts, soft and relax sweeps, with impacts (points reordered deepest first), held sides and parts.
+    void vectorSetUpGivesTheScalarNumbers_data() { batchesGiveTheSequentialNumbers_data(); }
+    void vectorSetUpGivesTheScalarNumbers() {
+        const Row row = fetchRow(7);
+        const Problem& p = row.problem;
+        const std::span<const uint8_t> partSpan = row.partSpan();
+        const bool chain = row.chain;
+        const int constraints = row.constraints;
+        // How many constraints are impacts, solved deepest point first (the records show it).
+        ContactSolver records;
+        records.keepConstraints(true);
+        prepare(records, p, partSpan, false);
+        int impacts = 0;
+        for (const ContactConstraint& c : records.constraints())
+            impacts += c.order[0] != 0 || c.order[1] != 1 || c.order[2] != 2 ? 1 : 0;
+
+        std::vector<SolverBody> result[2];
+        std::vector<Manifold> stored[2];
+        for (int wide = 0; wide < 2; ++wide) {
+            ContactSolver::setWideSetUp(wide == 1);
+            ContactSolver solver;
+            prepare(solver, p, partSpan, false);
+            ContactSolver::setWideSetUp(true);
+            QCOMPARE(solver.constraints().size(), size_t(0)); // set up straight into the batches
+            result[wide] = p.bodies;
+            for (int substep = 0; substep < 3; ++substep) {
+                solver.warmStart(result[wide]);
+                solver.solve(result[wide], true);
+                solver.solve(result[wide], false);
+            }
+            stored[wide] = p.manifolds;
+            std::vector<Manifold*> pointers;
+            for (Manifold& m : stored[wide])
+                pointers.push_back(&m);
+            solver.storeImpulses(pointers);
+        }
+        ContactSolver::setWidestLanes(8);
+        int moved = 0;
+        for (size_t i = 0; i < p.bodies.size(); ++i) {
+            QCOMPARE(result[1][i].v, result[0][i].v);
+            QCOMPARE(result[1][i].w, result[0][i].w);
+            moved += result[0][i].v != p.bodies[i].v ? 1 : 0;
+        }
+        int pushing = 0;
+        for (size_t i = 0; i < p.manifolds.size(); ++i) {
+            QCOMPARE(stored[1][i].frictionImpulse, stored[0][i].frictionImpulse);
+            QCOMPARE(stored[1][i].twistImpulse, stored[0][i].twistImpulse);
+            for (int k = 0; k < p.manifolds[i].pointCount; ++k) {
+                QCOMPARE(stored[1][i].points[k].normalImpulse, stored[0][i].points[k].normalImpulse);
+                pushing += stored[0][i].points[k].normalImpulse > 0.0 ? 1 : 0;
+            }
+        }
+        qInfo("%d constraints, %d solved deepest point first, %d bodies moved, %d points pushing", constraints, impacts,
+              moved, pushing);
+        QVERIFY(moved > 0 && pushing > 0);
+        if (!chain)
+            QVERIFY(impacts > 0);
     }
 
     // A constraint that holds one side reads that body's velocity but never moves it (to the bit), so the other body

@@ -221,17 +221,21 @@ QString threadsLine(const QString& label, int threads, const BenchResult& thread
         .arg(one.stateHash == threaded.stateHash ? "yes" : "no");
 }
 
-QString resultLine(const QString& label, const BenchResult& r) {
-    return QString("scene=%1 bodies=%2 frames=%3 median_ms=%4 p95_ms=%5 mean_ms=%6 awake=%7 contacts=%8 "
-                   "broad_ms=%9 narrow_ms=%10 solve_ms=%11 other_ms=%12 cpu_median_ms=%13 runs=%14\n")
-        .arg(label)
+// The fields both engines' lines share: bodies= frames= median_ms= p95_ms= mean_ms= awake= contacts=.
+QString runFields(const BenchResult& r) {
+    return QString("bodies=%1 frames=%2 median_ms=%3 p95_ms=%4 mean_ms=%5 awake=%6 contacts=%7")
         .arg(r.bodies)
         .arg(r.frames)
         .arg(r.medianMs, 0, 'f', 3)
         .arg(r.p95Ms, 0, 'f', 3)
         .arg(r.meanMs, 0, 'f', 3)
         .arg(r.awake)
-        .arg(r.contacts)
+        .arg(r.contacts);
+}
+
+QString resultLine(const QString& label, const BenchResult& r) {
+    return QString("scene=%1 %2 broad_ms=%3 narrow_ms=%4 solve_ms=%5 other_ms=%6 cpu_median_ms=%7 runs=%8\n")
+        .arg(label, runFields(r))
         .arg(r.broadMs, 0, 'f', 1)
         .arg(r.narrowMs, 0, 'f', 1)
         .arg(r.solveMs, 0, 'f', 1)
@@ -240,23 +244,21 @@ QString resultLine(const QString& label, const BenchResult& r) {
         .arg(r.runs);
 }
 
-// Bullet on the same scene, and RigidLab's cost as a ratio of Bullet's (above 1: RigidLab is slower).
-QString bulletLines(const QString& label, const BenchResult& ours, const BenchResult& bullet) {
+// Bullet on the same scene, and RigidLab's cost as a ratio of Bullet's (above 1: RigidLab is slower). Bullet steps on
+// one thread, so the ratio is RigidLab's on one thread; `threaded`, if given, adds RigidLab's threaded run as a ratio.
+QString bulletLines(const QString& label, const BenchResult& ours, const BenchResult& bullet,
+                    const BenchResult* threaded) {
     const auto ratio = [](double a, double b) { return b > 0.0 ? a / b : 0.0; };
-    return QString("bullet scene=%1 bodies=%2 frames=%3 median_ms=%4 p95_ms=%5 mean_ms=%6 awake=%7 contacts=%8 "
-                   "cpu_median_ms=%9\nratio scene=%1 rigidlab/bullet median=%10 cpu_median=%11 mean=%12\n")
-        .arg(label)
-        .arg(bullet.bodies)
-        .arg(bullet.frames)
-        .arg(bullet.medianMs, 0, 'f', 3)
-        .arg(bullet.p95Ms, 0, 'f', 3)
-        .arg(bullet.meanMs, 0, 'f', 3)
-        .arg(bullet.awake)
-        .arg(bullet.contacts)
-        .arg(bullet.cpuMedianMs, 0, 'f', 3)
-        .arg(ratio(ours.medianMs, bullet.medianMs), 0, 'f', 2)
-        .arg(ratio(ours.cpuMedianMs, bullet.cpuMedianMs), 0, 'f', 2)
-        .arg(ratio(ours.meanMs, bullet.meanMs), 0, 'f', 2);
+    QString lines = QString("bullet scene=%1 %2 cpu_median_ms=%3\nratio scene=%1 rigidlab/bullet median=%4 "
+                            "cpu_median=%5 mean=%6")
+                        .arg(label, runFields(bullet))
+                        .arg(bullet.cpuMedianMs, 0, 'f', 3)
+                        .arg(ratio(ours.medianMs, bullet.medianMs), 0, 'f', 2)
+                        .arg(ratio(ours.cpuMedianMs, bullet.cpuMedianMs), 0, 'f', 2)
+                        .arg(ratio(ours.meanMs, bullet.meanMs), 0, 'f', 2);
+    if (threaded)
+        lines += QString(" threaded_median=%1").arg(ratio(threaded->medianMs, bullet.medianMs), 0, 'f', 2);
+    return lines + "\n";
 }
 
 // Slope of the least-squares line through (log x, log y): the exponent k of y ~ x^k.
@@ -293,7 +295,8 @@ int runBench(const QStringList& arguments) {
         "the run, the least over the runs; the step times are each frame's least over the runs, see --runs).\nWhen "
         "built with Debian's libbullet-dev, each scene is then stepped in Bullet at its defaults (hull "
         "against hull, same fps, same materials) and two more lines follow: bullet scene=... and ratio scene=... "
-        "rigidlab/bullet median= cpu_median= mean= (above 1: RigidLab is slower).\n"
+        "rigidlab/bullet median= cpu_median= mean= (above 1: RigidLab is slower; with --threads above 1, RigidLab's "
+        "one-thread run, and threaded_median= its threaded one).\n"
         "Without scenes, runs stack20, pyramid20, ramps and boxes1000 for 120 frames.\nNamed scenes: " +
         namesList() + " (ramps is the original project's 642-cube scene, resources/scenes/ramps.obj).\n" +
         QString::fromStdString(bench::BulletReference::description()));
@@ -488,7 +491,7 @@ int runBench(const QStringList& arguments) {
         }
         if (withBullet) {
             summarize(bulletTimes, reference);
-            printOut(bulletLines(label, result, reference));
+            printOut(bulletLines(label, threads > 1 ? one : result, reference, threads > 1 ? &result : nullptr));
         }
         std::fflush(stdout);
         if (scaling) {

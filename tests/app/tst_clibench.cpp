@@ -143,6 +143,34 @@ private slots:
             QVERIFY(bullet.value("contacts").toInt() > 0 && ours.value("contacts").toInt() > 0);
     }
 
+    // Bullet steps on one thread: with --threads 2 the ratio is RigidLab's one-thread run against Bullet's, and
+    // threaded_median= adds the two-thread run's.
+    void bulletRatioWithThreadsIsOneThreads() {
+        const Run r = runCli({"bench", "stack20", "--frames", "20", "--threads", "2", "--quiet"});
+        QCOMPARE(r.exitCode, 0);
+        const QStringList lines = QString::fromUtf8(r.out).split('\n', Qt::SkipEmptyParts);
+        if (QString::fromUtf8(runCli({"bench", "--help"}).out).contains("not built in")) {
+            QCOMPARE(lines.size(), 2); // without libbullet-dev: RigidLab's line and the threads line only
+            return;
+        }
+        QCOMPARE(lines.size(), 4);
+        QVERIFY(lines[1].startsWith("threads "));
+        QVERIFY(lines[2].startsWith("bullet "));
+        QVERIFY(lines[3].startsWith("ratio "));
+        const double oneThread = fields(lines[1]).value("one_thread_median_ms").toDouble();
+        const double twoThreads = fields(lines[0]).value("median_ms").toDouble();
+        const double bullet = fields(lines[2]).value("median_ms").toDouble();
+        const QHash<QString, QString> ratio = fields(lines[3]);
+        QVERIFY(bullet > 0.0 && oneThread > 0.0 && twoThreads > 0.0);
+        // The printed ratios are of medians rounded to 0.0005 ms, and are themselves rounded to 0.005.
+        const auto near = [&](double printed, double ours) {
+            return printed >= (ours - 0.0005) / (bullet + 0.0005) - 0.0051 &&
+                   printed <= (ours + 0.0005) / std::max(bullet - 0.0005, 1e-9) + 0.0051;
+        };
+        QVERIFY2(near(ratio.value("median").toDouble(), oneThread), qPrintable(lines[3]));
+        QVERIFY2(near(ratio.value("threaded_median").toDouble(), twoThreads), qPrintable(lines[3]));
+    }
+
     void progressGoesToStderr() {
         const Run r = runCli({"bench", "stack20", "--frames", "5"});
         QCOMPARE(r.exitCode, 0);

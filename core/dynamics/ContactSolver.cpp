@@ -103,7 +103,7 @@ inline void applyRowT(SolverBody& a, SolverBody& b, const Inverse& ia, const Inv
 }
 
 // One manifold's constraint, for one step (see prepare()). ContactSolver::setUpBatch() (ContactSolverWide.cpp) does
-// the same for a batch's W constraints at once where no records are kept: a change here goes there too
+// the same for a batch's W constraints at once: a change here goes there too
 // (tst_contactsolver's vectorSetUpGivesTheScalarNumbers compares the two).
 void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, uint32_t indexB, Real friction,
                      Real restitution, ContactSolver::Hold held, std::span<const SolverBody> bodies,
@@ -437,11 +437,12 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
     store.maxImpulse.resize(maxImpulse ? pointTotal : 0);
     m_laneOf.resize(m_count);
     m_order.resize(m_count);
-    // W constraints at a time where no whole records are kept (the vector set-up writes only the batches). Set up
-    // one by one, large_pyramid's prepare_contacts took 4.13-4.49 ms a step on one thread and 2.32-2.46 on two; in
-    // vectors 3.25-3.41 and 1.83-1.85 (frames 5-45, each frame's least of three runs, two interleaved runs of each
-    // build, 2026-11-28). The frames are the same.
-    const bool wideSetUp = s_wideSetUp && !m_kept;
+    // W constraints at a time, in vectors (setUpBatch()). Set up one by one, large_pyramid's prepare_contacts took
+    // 4.13-4.49 ms a step on one thread and 2.32-2.46 on two; in vectors 3.25-3.41 and 1.83-1.85 (frames 5-45, each
+    // frame's least of three runs, two interleaved runs of each build, 2026-11-28). With the records written from
+    // the vectors too (restitution on), ramps' took 0.164-0.169 ms against 0.190 (one thread, 300 frames, likewise).
+    // The frames are the same.
+    const bool wideSetUp = s_wideSetUp;
     shareOut(parallelFor, layout.size(), [&](size_t begin, size_t end) {
         for (size_t b = begin; b < end; ++b) {
             const BatchLayout& at = layout[b];

@@ -224,9 +224,9 @@ public:
     // 4 keeps every solver's batches to four lanes; 8 (the default) lets them have eight where the CPU has AVX-512.
     // For tests, which compare the two widths; it applies to the next prepare().
     static void setWidestLanes(int lanes) { s_widestLanes = lanes; }
-    // Where no whole records are kept (no restitution), the batches are set up W constraints at a time in vectors
-    // (ContactSolverWide.cpp), with the same numbers as setUpConstraint(). For tests, which compare the two: false
-    // sets every constraint up alone; it applies to the next prepare().
+    // The batches (and the records, where kept) are set up W constraints at a time in vectors (ContactSolverWide.cpp),
+    // with the same numbers as setUpConstraint(). For tests, which compare the two: false sets every constraint up
+    // alone; it applies to the next prepare().
     static void setWideSetUp(bool on) { s_wideSetUp = on; }
 
     // The whole constraint records, in manifold order, with the impulses of the last sweep. prepare() keeps them only
@@ -332,9 +332,9 @@ private:
     void warmStartBatches(BatchStore<W>& store, std::span<SolverBody> bodies, size_t begin, size_t end);
     template <int W, bool kMaxImpulse>
     void solveBatches(BatchStore<W>& store, std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
-    // Sets batch b's constraints up in its lanes, all W at once, and the constraints' m_order and m_laneOf entries
-    // (ContactSolverWide.cpp); only where no whole records are kept. False, having written nothing, in a build
-    // without vector types (setUpConstraint() then sets them up one by one).
+    // Sets batch b's constraints up in its lanes, all W at once, with the constraints' m_order and m_laneOf entries
+    // and, where kept, their records (ContactSolverWide.cpp). False, having written nothing, in a build without
+    // vector types (setUpConstraint() then sets them up one by one).
     template <int W>
     bool setUpBatch(BatchStore<W>& store, const SetUpInputs& inputs, size_t b);
     bool setUpBatch4(const SetUpInputs& inputs, size_t b);

@@ -651,9 +651,9 @@ RL_LANES_INLINE M3<V> scaled(const M3<V>& a, const V& s) {
 #endif
 
 // setUpConstraint() (ContactSolver.cpp) for the W constraints of batch b at once: the same operations in the same
-// order in every lane, so the same numbers, and the restitution speeds, which no sweep reads, left out. The lanes are
-// read from the manifolds and bodies one by one; empty lanes and point slots beyond a lane's points compute on zeros
-// and are stored as zeros, as the scalar fill leaves them.
+// order in every lane, so the same numbers; the whole records are written too where they are kept (m_kept). The
+// lanes are read from the manifolds and bodies one by one; empty lanes and point slots beyond a lane's points compute
+// on zeros and are stored as zeros, as the scalar fill leaves them.
 template <int W>
 RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUpInputs& in, size_t b) {
 #if defined(__GNUC__) && !defined(__clang__)
@@ -671,7 +671,7 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
     const Manifold* manifold[W];
     uint32_t index[W];
     V used, pointCount, stillA, stillB; // 1 or 0 per lane
-    V scaleA, scaleB, frictionIn, invMassA, invMassB, twistImpulseIn;
+    V scaleA, scaleB, frictionIn, restitution, invMassA, invMassB, twistImpulseIn;
     M3<V> inertiaA, inertiaB;
     L3<V> normalIn, centreA, centreB, vA, wA, vB, wB, frictionImpulseIn;
     L3<V> position[4];
@@ -699,6 +699,7 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         scaleB[l] = held.side == kHoldB ? held.scale : 1.0;
         // (A double past a float's range has no float to round to: see setUpConstraint().)
         frictionIn[l] = inUse ? std::min(in.friction[i], Real(1e30)) : 0.0;
+        restitution[l] = inUse ? in.restitution[i] : 0.0;
         const SolverBody& bodyA = in.bodies[a];
         const SolverBody& bodyB = in.bodies[bb];
         invMassA[l] = bodyA.invMass;
@@ -743,7 +744,7 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
     const bool warm = m_settings.warmStarting;
     const V approaching = splat<W>(-m_settings.restitutionThreshold);
     L3<V> rA[4], rB[4];
-    V baseSeparation[4], mass[4], impulse[4], leverArm[4];
+    V baseSeparation[4], mass[4], impulse[4], leverArm[4], relativeVelocity[4];
     Mask valid[4];
     Mask impact = zero < zero;
     for (uint32_t k = 0; k < at.pointCount; ++k) {
@@ -755,8 +756,8 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         const V normalK = ((massA + massB) + dot(angularA, inverseA * angularA)) + dot(angularB, inverseB * angularB);
         mass[k] = select(normalK > zero, rounded<W>(one / normalK), zero);
         impulse[k] = warm ? impulseIn[k] : zero;
-        const V relative = dot(normal, (vB + cross(wB, rB[k])) - (vA + cross(wA, rA[k])));
-        impact = impact | (valid[k] & (relative < approaching));
+        relativeVelocity[k] = dot(normal, (vB + cross(wB, rB[k])) - (vA + cross(wA, rA[k])));
+        impact = impact | (valid[k] & (relativeVelocity[k] < approaching));
     }
 
     // The friction centre, weighted as setUpConstraint() weighs it.
@@ -791,6 +792,24 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
     const V twistMass = select(twist > zero, rounded<W>(one / twist), zero);
     const Mask warmFriction = warm && m_settings.friction ? friction > zero : zero < zero;
 
+    // The normal speed at impact, for restitution only (setUpConstraint()): a point still apart meets at the speed
+    // energy gives, one touching already at the speed it has.
+    const L3<V> gravity{splat<W>(m_settings.gravity.x), splat<W>(m_settings.gravity.y), splat<W>(m_settings.gravity.z)};
+    const V approachAcceleration =
+        dot(normal, select(invMassB > zero, gravity, zero3) - select(invMassA > zero, gravity, zero3));
+    if (m_settings.restitution) {
+        const Mask bounces = restitution > zero;
+        const V flight = splat<W>(m_settings.flightOffset), h = splat<W>(m_h), two = splat<W>(2.0);
+        for (uint32_t k = 0; k < at.pointCount; ++k) {
+            const V& s = separation[k];
+            const V v = relativeVelocity[k] + (flight * approachAcceleration) * h;
+            const Mask apart = s > zero;
+            const Mask flying = (v >= zero) & (approachAcceleration >= zero);
+            const V atImpact = -sqrtOf<W>(maxOf(v * v - (two * approachAcceleration) * s, zero));
+            relativeVelocity[k] = select(bounces & valid[k], select(apart & ~flying, atImpact, v), relativeVelocity[k]);
+        }
+    }
+
     // The batch, with empty lanes zero.
     const auto keep = [&](const V& x) { return select(inUse, x, zero); };
     const auto keep3 = [&](const L3<V>& x) { return select(inUse, x, zero3); };
@@ -823,6 +842,48 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         putFloat<W>(q.leverArm, select(here, leverArm[k], zero));
         put<W>(q.impulse, select(here, impulse[k], zero));
     }
+    // Lane l's whole record, for the sequential sweeps and the restitution pass (when kept).
+    const auto laneOf = [](const L3<V>& v, uint32_t l) { return Vec3(v.x[l], v.y[l], v.z[l]); };
+    const auto record = [&](uint32_t l) {
+        const Manifold& m = *manifold[l];
+        ContactConstraint c;
+        c.bodyA = batch.bodyA[l];
+        c.bodyB = batch.bodyB[l];
+        c.scaleA = scaleA[l];
+        c.scaleB = scaleB[l];
+        c.normal = laneOf(normal, l);
+        c.tangent[0] = laneOf(tangent[0], l);
+        c.tangent[1] = laneOf(tangent[1], l);
+        c.friction = friction[l];
+        c.restitution = restitution[l];
+        c.pointCount = m.pointCount;
+        c.approachAcceleration = approachAcceleration[l];
+        c.anchorOffset = laneOf(anchorOffset, l);
+        for (int k = 0; k < m.pointCount; ++k) {
+            ContactConstraint::Point& p = c.points[k];
+            p.rA = laneOf(rA[k], l);
+            p.rB = laneOf(rB[k], l);
+            p.baseSeparation = baseSeparation[k][l];
+            p.normalMass = mass[k][l];
+            p.normalImpulse = impulse[k][l];
+            p.maxNormalImpulse = 0.0;
+            p.relativeVelocity = relativeVelocity[k][l];
+            p.leverArm = leverArm[k][l];
+        }
+        std::copy(m_order[index[l]].begin(), m_order[index[l]].end(), c.order);
+        c.centerA = laneOf(centerA, l);
+        c.centerB = laneOf(centerB, l);
+        c.frictionMass[0] = batch.frictionMass[0].v[l];
+        c.frictionMass[1] = batch.frictionMass[1].v[l];
+        c.frictionMass[2] = batch.frictionMass[2].v[l];
+        c.frictionImpulse[0] = batch.frictionImpulse[0].v[l];
+        c.frictionImpulse[1] = batch.frictionImpulse[1].v[l];
+        c.twistMass = twistMass[l];
+        c.twistImpulse = batch.twistImpulse.v[l];
+        return c;
+    };
+    if (!store.maxImpulse.empty() && at.pointCount > 0)
+        std::memset(static_cast<void*>(&store.maxImpulse[at.firstPoint]), 0, at.pointCount * sizeof(Lanes<W>));
     for (uint32_t l = 0; l < at.lanes; ++l) {
         const uint32_t i = index[l];
         const Manifold& m = *manifold[l];
@@ -830,10 +891,13 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         for (int k = 0; k < 4; ++k)
             order[static_cast<size_t>(k)] = static_cast<uint8_t>(k);
         m_laneOf[i] = static_cast<uint32_t>(b * W + l);
+        if (impact[l] != 0)
+            std::stable_sort(order.begin(), order.begin() + m.pointCount,
+                             [&](uint8_t x, uint8_t y) { return m.points[x].separation < m.points[y].separation; });
+        if (m_kept)
+            m_constraints[i] = record(l);
         if (impact[l] == 0)
             continue;
-        std::stable_sort(order.begin(), order.begin() + m.pointCount,
-                         [&](uint8_t x, uint8_t y) { return m.points[x].separation < m.points[y].separation; });
         for (int k = 0; k < m.pointCount; ++k) {
             const uint8_t from = order[static_cast<size_t>(k)];
             BatchPoint<W>& q = store.points[at.firstPoint + static_cast<uint32_t>(k)];

@@ -7,6 +7,7 @@
 
 #include <QTest>
 
+#include <bit>
 #include <cstring>
 #include <random>
 
@@ -119,10 +120,11 @@ Problem makeProblem(int bodyCount, int count, bool chain, unsigned seed) {
 }
 
 void prepare(ContactSolver& solver, const Problem& p, std::span<const uint8_t> parts = {}, bool restitution = true,
-             const ContactSolver::ParallelFor& parallelFor = {}) {
+             const ContactSolver::ParallelFor& parallelFor = {}, const Vec3& gravity = Vec3(0.0)) {
     ContactSolverSettings settings;
     settings.contactHertz = 120.0;
     settings.restitution = restitution;
+    settings.gravity = gravity;
     // prepare() reads the manifolds and keeps nothing of them (only storeImpulses(), not called here, writes).
     std::vector<Manifold*> manifolds;
     for (const Manifold& m : p.manifolds)
@@ -431,65 +433,115 @@ private slots:
         QVERIFY(changed > 100); // the sweeps changed most points' impulses (203 manifolds, 507 points)
     }
 
-    // Without restitution the batches are set up eight (or four) constraints at a time in vectors; that set-up gives
-    // the numbers of setUpConstraint(), one constraint at a time, to the bit: the same velocities and stored impulses
-    // through warm starts, soft and relax sweeps, with impacts (points reordered deepest first), held sides and parts.
+    // The batches are set up eight (or four) constraints at a time in vectors; that set-up gives the numbers of
+    // setUpConstraint(), one constraint at a time, to the bit: the same records where they are kept (restitution on,
+    // with half the contacts bouncing under gravity), and the same velocities and stored impulses through warm
+    // starts, soft and relax sweeps and the restitution pass, with impacts (points reordered deepest first), held
+    // sides and parts.
     void vectorSetUpGivesTheScalarNumbers_data() { batchesGiveTheSequentialNumbers_data(); }
     void vectorSetUpGivesTheScalarNumbers() {
-        const Row row = fetchRow(7);
-        const Problem& p = row.problem;
+        // To the bit: QCOMPARE compares doubles within a tolerance.
+        const auto bits = [](const auto& x) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Vec3>)
+                return std::array<uint64_t, 3>{std::bit_cast<uint64_t>(x.x), std::bit_cast<uint64_t>(x.y),
+                                               std::bit_cast<uint64_t>(x.z)};
+            else
+                return std::bit_cast<uint64_t>(x);
+        };
+        Row row = fetchRow(7);
+        Problem& p = row.problem;
+        for (size_t i = 0; i < p.restitution.size(); ++i)
+            p.restitution[i] = i % 2 == 0 ? 0.5 : 0.0;
         const std::span<const uint8_t> partSpan = row.partSpan();
-        const bool chain = row.chain;
-        const int constraints = row.constraints;
-        // How many constraints are impacts, solved deepest point first (the records show it).
-        ContactSolver records;
-        records.keepConstraints(true);
-        prepare(records, p, partSpan, false);
-        int impacts = 0;
-        for (const ContactConstraint& c : records.constraints())
-            impacts += c.order[0] != 0 || c.order[1] != 1 || c.order[2] != 2 ? 1 : 0;
-
-        std::vector<SolverBody> result[2];
-        std::vector<Manifold> stored[2];
-        for (int wide = 0; wide < 2; ++wide) {
-            ContactSolver::setWideSetUp(wide == 1);
-            ContactSolver solver;
-            prepare(solver, p, partSpan, false);
-            ContactSolver::setWideSetUp(true);
-            QCOMPARE(solver.constraints().size(), size_t(0)); // set up straight into the batches
-            result[wide] = p.bodies;
-            for (int substep = 0; substep < 3; ++substep) {
-                solver.warmStart(result[wide]);
-                solver.solve(result[wide], true);
-                solver.solve(result[wide], false);
+        const Vec3 gravity(0.0, -9.81, 0.0);
+        for (const bool restitution : {false, true}) {
+            std::vector<SolverBody> result[2];
+            std::vector<Manifold> stored[2];
+            std::vector<ContactConstraint> records[2];
+            for (int wide = 0; wide < 2; ++wide) {
+                ContactSolver::setWideSetUp(wide == 1);
+                ContactSolver solver;
+                prepare(solver, p, partSpan, restitution, {}, gravity);
+                ContactSolver::setWideSetUp(true);
+                // Without restitution nothing reads the records: the set-up goes straight into the batches.
+                QCOMPARE(solver.constraints().size(), restitution ? p.manifolds.size() : size_t(0));
+                records[wide] = solver.constraints();
+                result[wide] = p.bodies;
+                for (int substep = 0; substep < 3; ++substep) {
+                    solver.warmStart(result[wide]);
+                    solver.solve(result[wide], true);
+                    solver.solve(result[wide], false);
+                }
+                if (restitution)
+                    solver.applyRestitution(result[wide]);
+                stored[wide] = p.manifolds;
+                std::vector<Manifold*> pointers;
+                for (Manifold& m : stored[wide])
+                    pointers.push_back(&m);
+                solver.storeImpulses(pointers);
             }
-            stored[wide] = p.manifolds;
-            std::vector<Manifold*> pointers;
-            for (Manifold& m : stored[wide])
-                pointers.push_back(&m);
-            solver.storeImpulses(pointers);
+            int impacts = 0, bouncing = 0;
+            for (size_t i = 0; i < records[0].size(); ++i) {
+                const ContactConstraint& x = records[1][i];
+                const ContactConstraint& y = records[0][i];
+                QCOMPARE(x.bodyA, y.bodyA);
+                QCOMPARE(x.bodyB, y.bodyB);
+                QCOMPARE(bits(x.anchorOffset), bits(y.anchorOffset));
+                QCOMPARE(bits(x.normal), bits(y.normal));
+                QCOMPARE(bits(x.tangent[0]), bits(y.tangent[0]));
+                QCOMPARE(bits(x.tangent[1]), bits(y.tangent[1]));
+                QCOMPARE(bits(x.friction), bits(y.friction));
+                QCOMPARE(bits(x.restitution), bits(y.restitution));
+                QCOMPARE(bits(x.approachAcceleration), bits(y.approachAcceleration));
+                QCOMPARE(x.pointCount, y.pointCount);
+                for (int k = 0; k < 4; ++k) {
+                    QCOMPARE(x.order[k], y.order[k]);
+                    const ContactConstraint::Point &q = x.points[k], &r = y.points[k];
+                    QCOMPARE(bits(q.rA), bits(r.rA));
+                    QCOMPARE(bits(q.rB), bits(r.rB));
+                    QCOMPARE(bits(q.baseSeparation), bits(r.baseSeparation));
+                    QCOMPARE(bits(q.normalMass), bits(r.normalMass));
+                    QCOMPARE(bits(q.normalImpulse), bits(r.normalImpulse));
+                    QCOMPARE(bits(q.maxNormalImpulse), bits(r.maxNormalImpulse));
+                    QCOMPARE(bits(q.relativeVelocity), bits(r.relativeVelocity));
+                    QCOMPARE(bits(q.leverArm), bits(r.leverArm));
+                }
+                QCOMPARE(bits(x.centerA), bits(y.centerA));
+                QCOMPARE(bits(x.centerB), bits(y.centerB));
+                for (int k = 0; k < 3; ++k)
+                    QCOMPARE(bits(x.frictionMass[k]), bits(y.frictionMass[k]));
+                QCOMPARE(bits(x.frictionImpulse[0]), bits(y.frictionImpulse[0]));
+                QCOMPARE(bits(x.frictionImpulse[1]), bits(y.frictionImpulse[1]));
+                QCOMPARE(bits(x.twistMass), bits(y.twistMass));
+                QCOMPARE(bits(x.twistImpulse), bits(y.twistImpulse));
+                QCOMPARE(bits(x.scaleA), bits(y.scaleA));
+                QCOMPARE(bits(x.scaleB), bits(y.scaleB));
+                impacts += y.order[0] != 0 || y.order[1] != 1 || y.order[2] != 2 ? 1 : 0;
+                bouncing += y.restitution > 0.0 && y.points[0].relativeVelocity < 0.0 ? 1 : 0;
+            }
+            int moved = 0;
+            for (size_t i = 0; i < p.bodies.size(); ++i) {
+                QCOMPARE(bits(result[1][i].v), bits(result[0][i].v));
+                QCOMPARE(bits(result[1][i].w), bits(result[0][i].w));
+                moved += result[0][i].v != p.bodies[i].v ? 1 : 0;
+            }
+            int pushing = 0;
+            for (size_t i = 0; i < p.manifolds.size(); ++i) {
+                QCOMPARE(bits(stored[1][i].frictionImpulse), bits(stored[0][i].frictionImpulse));
+                QCOMPARE(bits(stored[1][i].twistImpulse), bits(stored[0][i].twistImpulse));
+                for (int k = 0; k < p.manifolds[i].pointCount; ++k) {
+                    QCOMPARE(bits(stored[1][i].points[k].normalImpulse), bits(stored[0][i].points[k].normalImpulse));
+                    pushing += stored[0][i].points[k].normalImpulse > 0.0 ? 1 : 0;
+                }
+            }
+            qInfo("restitution %s: %d constraints, %d solved deepest point first, %d bouncing, %d bodies moved, %d "
+                  "points pushing",
+                  restitution ? "on" : "off", row.constraints, impacts, bouncing, moved, pushing);
+            QVERIFY(moved > 0 && pushing > 0);
+            if (restitution && !row.chain)
+                QVERIFY(impacts > 0 && bouncing > 0);
         }
         ContactSolver::setWidestLanes(8);
-        int moved = 0;
-        for (size_t i = 0; i < p.bodies.size(); ++i) {
-            QCOMPARE(result[1][i].v, result[0][i].v);
-            QCOMPARE(result[1][i].w, result[0][i].w);
-            moved += result[0][i].v != p.bodies[i].v ? 1 : 0;
-        }
-        int pushing = 0;
-        for (size_t i = 0; i < p.manifolds.size(); ++i) {
-            QCOMPARE(stored[1][i].frictionImpulse, stored[0][i].frictionImpulse);
-            QCOMPARE(stored[1][i].twistImpulse, stored[0][i].twistImpulse);
-            for (int k = 0; k < p.manifolds[i].pointCount; ++k) {
-                QCOMPARE(stored[1][i].points[k].normalImpulse, stored[0][i].points[k].normalImpulse);
-                pushing += stored[0][i].points[k].normalImpulse > 0.0 ? 1 : 0;
-            }
-        }
-        qInfo("%d constraints, %d solved deepest point first, %d bodies moved, %d points pushing", constraints, impacts,
-              moved, pushing);
-        QVERIFY(moved > 0 && pushing > 0);
-        if (!chain)
-            QVERIFY(impacts > 0);
     }
 
     // A constraint that holds one side reads that body's velocity but never moves it (to the bit), so the other body

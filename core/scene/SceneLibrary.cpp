@@ -261,6 +261,17 @@ Scene spinningPlank(Real spin) {
     return s;
 }
 
+Scene shotAtStandingWall(Real offset, Real speed) {
+    Scene s;
+    s.materials.push_back({"Steelish", 7850.0, 0.5, 0.0});
+    s.bodies.push_back(floorBox());
+    s.bodies.push_back(box("Wall", Vec3(0.025, 1.0, 1.0), Vec3(0.0, 1.0, 0.0)));
+    s.bodies.push_back(box("Shot", Vec3(0.05), Vec3(-2.0 - offset, 1.0, 0.0)));
+    s.bodies.back().material = "Steelish";
+    s.bodies.back().velocity = Vec3(speed, 0.0, 0.0);
+    return s;
+}
+
 Scene scalingGrid(int count) {
     Scene s;
     const int side = static_cast<int>(std::ceil(std::sqrt(count / 2.0)));

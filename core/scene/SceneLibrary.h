@@ -28,7 +28,10 @@ Scene coincidentBoxes();                         // two identical boxes in the s
 Scene busy(unsigned seed = 7);                   // mixed spheres and boxes, restitution and friction, inside walls
 Scene bullet(Real offset, Real speed = 300.0);   // a 0.1 m cube shot at a 5 cm anchor wall; offset shifts the start
 Scene spinningPlank(Real spin = 50.0);           // a thin plank spinning at `spin` rad/s, moving towards a thin wall
-Scene scalingGrid(int count);                    // `count` cubes on a floor in a grid, some resting, some falling
+// A 0.1 m steel cube shot at 1 m height at a free-standing 5 cm x 2 m x 2 m wall on the floor (body 1; the shot is
+// body 2); offset shifts the start back from 2 m before the wall.
+Scene shotAtStandingWall(Real offset, Real speed = 100.0);
+Scene scalingGrid(int count); // `count` cubes on a floor in a grid, some resting, some falling
 
 // Names for rigidlab-cli bench: "stack20", "pyramid20", "large_pyramid", "boxes1000", "scale1k", "scale4k", "scale16k"
 // ... (see names()).

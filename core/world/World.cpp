@@ -1356,27 +1356,38 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
 }
 
 void World::continuousCollision() {
-    // Fast bodies are swept against the anchors by conservative advancement on the signed distance: the body is moved
-    // back to its first time of impact, where next step's speculative contact stops it. Dynamic-versus-dynamic
-    // tunnelling is left to the speculative margin.
-    // Each body alone (it reads only the anchors), so a team shares the bodies out with the same results.
+    // Fast bodies are swept by conservative advancement on the signed distance, against the anchors and against the
+    // dynamic bodies that are not fast themselves, at their poses after the solve: the body is moved back to its
+    // first time of impact, where next step's speculative contact stops it. A dynamic body is swept against only
+    // where the pair's speculative margin could not cover the step's motion (World::pairMargin() caps it at the
+    // bodies' size): a 10 cm steel cube at 30 m/s went through a free-standing 5 cm wall in 9 of 10 starts without
+    // touching it, while the margin covers the piles of ramps.obj, whose frames this leaves as they were. Two fast
+    // bodies are left to their speculative contacts, as Box2D leaves two bullets.
+    // Each body alone: it reads only anchors and bodies that are not fast, which no sweep moves, so a team shares
+    // the bodies out with the same results.
     const Real target = 0.25 * m_tuning.speculativeDistance;
     struct Counts {
         uint64_t bodies = 0, hits = 0;
     };
+    // How far any point of body k got over the step (its centre's travel plus its turn times its radius).
+    const auto stepSweep = [&](uint32_t k) {
+        const Real angle =
+            2.0 *
+            std::acos(std::clamp(std::abs(glm::dot(m_stepStartOrientation[k], m_state.orientation[k])), 0.0, 1.0));
+        return glm::length(m_state.position[k] - m_stepStartPosition[k]) + angle * m_radius[k];
+    };
+    const auto isFast = [&](uint32_t k, Real sweep) { return sweep > m_tuning.ccdFraction * m_minExtent[k]; };
     const auto sweepBody = [&](uint32_t i, Counts& counts) {
         const Vec3 start = m_stepStartPosition[i];
         const Vec3 end = m_state.position[i];
         const Vec3 delta = end - start;
         const Quat q0 = m_stepStartOrientation[i];
         const Quat q1 = m_state.orientation[i];
-        const Real angle = 2.0 * std::acos(std::clamp(std::abs(glm::dot(q0, q1)), 0.0, 1.0));
-        const Real sweep = glm::length(delta) + angle * m_radius[i];
-        if (sweep <= m_tuning.ccdFraction * m_minExtent[i])
+        const Real sweep = stepSweep(i);
+        if (!isFast(i, sweep))
             return;
         ++counts.bodies;
 
-        // Candidate anchors: the static tree over the swept box.
         const Quat shapeFromPrincipal = m_state.info[i].shapeFromPrincipal;
         const Vec3 comInShape = m_state.info[i].comInShape;
         auto poseAt = [&](Real t) {
@@ -1390,13 +1401,12 @@ void World::continuousCollision() {
         swept.min = glm::min(swept.min, endBox.min);
         swept.max = glm::max(swept.max, endBox.max);
         Real toi = 1.0;
-        m_broadPhase.tree(ProxyKind::Static).query(swept, [&](int32_t proxy) {
-            const uint32_t j = m_broadPhase.tree(ProxyKind::Static).userId(proxy);
-            const Transform xfB = transform(j);
+        // Advances along the body's motion until it comes within `target` of body j, held at its pose xfB.
+        const auto advance = [&](uint32_t j, const Transform& xfB) {
             // Already close at the start: the speculative contact and the solver own this pair.
             Real d = signedDistance(m_shapes[i], poseAt(0.0), m_shapes[j], xfB).separation;
             if (d < 2.0 * target)
-                return true;
+                return;
             Real t = 0.0;
             for (int iteration = 0; iteration < 40 && t < toi; ++iteration) {
                 if (iteration > 0) // the first is the distance at the start, just taken
@@ -1409,6 +1419,22 @@ void World::continuousCollision() {
                 // past the first contact.
                 t += (d - 0.5 * target) / sweep;
             }
+        };
+        const DynamicTree& anchors = m_broadPhase.tree(ProxyKind::Static);
+        anchors.query(swept, [&](int32_t proxy) {
+            const uint32_t j = anchors.userId(proxy);
+            advance(j, transform(j));
+            return true;
+        });
+        const DynamicTree& dynamic = m_broadPhase.tree(ProxyKind::Dynamic);
+        dynamic.query(swept, [&](int32_t proxy) {
+            const uint32_t j = dynamic.userId(proxy);
+            if (j == i)
+                return true;
+            const Real sweepJ = m_state.isMoving(j) ? stepSweep(j) : 0.0;
+            if (isFast(j, sweepJ) || sweep + sweepJ <= std::max(m_minExtent[i], m_minExtent[j]))
+                return true;
+            advance(j, transform(j));
             return true;
         });
         if (toi < 1.0) {

@@ -7,6 +7,9 @@
 
 #include <QTest>
 
+#include <algorithm>
+#include <cmath>
+
 using namespace rl;
 using namespace rl::test;
 
@@ -258,6 +261,36 @@ private slots:
         }
         qInfo("0.1 m cube at 300 m/s against a 5 cm wall: stopped in %d of 20 offsets", stopped);
         QCOMPARE(stopped, 20);
+    }
+
+    // A free-standing wall is a dynamic body: the shot is swept against it too (World::continuousCollision()).
+    void shotNeverTunnelsThroughAStandingWall_data() {
+        QTest::addColumn<double>("speed");
+        QTest::newRow("30 m/s") << 30.0;
+        QTest::newRow("100 m/s") << 100.0;
+        QTest::newRow("300 m/s") << 300.0;
+    }
+
+    void shotNeverTunnelsThroughAStandingWall() {
+        QFETCH(double, speed);
+        constexpr int kStarts = 10;
+        int struck = 0;
+        Real leastShare = 1.0;
+        for (int k = 0; k < kStarts; ++k) {
+            const Real offset = k * speed / 60.0 / kStarts; // start offsets spread over one step of travel
+            World w = makeWorld(scenes::shotAtStandingWall(offset, speed));
+            const Real shotMomentum = w.mass(2) * speed;
+            // Until a quarter of a second after the shot would have reached the wall.
+            run(w, static_cast<int>(std::ceil((2.0 + offset) / speed * 60.0)) + 15);
+            const Real share = w.mass(1) * w.linearVelocity(1).x / shotMomentum;
+            leastShare = std::min(leastShare, share);
+            const bool nearSide = w.centerOfMass(2).x < w.centerOfMass(1).x;
+            struck += nearSide && share > 0.5 ? 1 : 0;
+        }
+        qInfo("0.1 m steel cube at %.0f m/s against a free-standing 5 cm wall: struck it in %d of %d starts; the wall "
+              "took at least %.1f %% of its momentum",
+              speed, struck, kStarts, 100.0 * leastShare);
+        QCOMPARE(struck, kStarts);
     }
 
     void spinningPlankNeverTunnels() {

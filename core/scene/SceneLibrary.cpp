@@ -272,6 +272,19 @@ Scene shotAtStandingWall(Real offset, Real speed) {
     return s;
 }
 
+Scene headOnShots(Real offset, Real speed) {
+    Scene s;
+    s.world.gravity = Vec3(0.0);
+    s.materials.push_back({"Steelish", 7850.0, 0.5, 0.0});
+    s.bodies.push_back(box("Left", Vec3(0.05), Vec3(-1.5 - offset, 0.0, 0.0)));
+    s.bodies.back().velocity = Vec3(speed, 0.0, 0.0);
+    s.bodies.push_back(box("Right", Vec3(0.05), Vec3(1.5, 0.0, 0.0)));
+    s.bodies.back().velocity = Vec3(-speed, 0.0, 0.0);
+    for (BodyDef& b : s.bodies)
+        b.material = "Steelish";
+    return s;
+}
+
 Scene scalingGrid(int count) {
     Scene s;
     const int side = static_cast<int>(std::ceil(std::sqrt(count / 2.0)));

@@ -31,6 +31,8 @@ Scene spinningPlank(Real spin = 50.0);           // a thin plank spinning at `sp
 // A 0.1 m steel cube shot at 1 m height at a free-standing 5 cm x 2 m x 2 m wall on the floor (body 1; the shot is
 // body 2); offset shifts the start back from 2 m before the wall.
 Scene shotAtStandingWall(Real offset, Real speed = 100.0);
+// Two 0.1 m steel cubes flying at each other at `speed` each, no gravity; offset shifts the first one's start back.
+Scene headOnShots(Real offset, Real speed = 100.0);
 Scene scalingGrid(int count); // `count` cubes on a floor in a grid, some resting, some falling
 
 // Names for rigidlab-cli bench: "stack20", "pyramid20", "large_pyramid", "boxes1000", "scale1k", "scale4k", "scale16k"

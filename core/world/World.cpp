@@ -1356,24 +1356,23 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
 }
 
 void World::continuousCollision() {
-    // Fast bodies are swept by conservative advancement on the signed distance, against the anchors and against the
-    // dynamic bodies that are not fast themselves, at their poses after the solve: the body is moved back to its
-    // first time of impact, where next step's speculative contact stops it. A dynamic body is swept against only
-    // where the pair's speculative margin could not cover their approach (World::pairMargin() caps it at the bodies'
-    // size): a 10 cm steel cube at 30 m/s went through a free-standing 5 cm wall in 7 of 10 starts without touching
-    // it. The margin covers the piles of ramps.obj and of 1,000 boxes, whose frames this leaves as they were. Two
-    // fast bodies are left to their speculative contacts, as Box2D leaves two bullets.
-    // Each body alone: it reads only anchors and bodies that are not fast, which no sweep moves, so a team shares
-    // the bodies out with the same results.
+    // Fast bodies are swept by conservative advancement on the signed distance, against the anchors and against
+    // dynamic bodies, and moved back to their first time of impact, where next step's speculative contact stops
+    // them. A dynamic body is swept against only where the two came closer than the pair's speculative margin
+    // covers (World::pairMargin() caps it at the bodies' size): a 10 cm steel cube at 30 m/s went through a
+    // free-standing 5 cm wall in 7 of 10 starts without touching it. The margin covers the piles of ramps.obj and of
+    // 1,000 boxes, whose frames this leaves as they were. A body that is not fast is held at its pose after the
+    // solve; two fast bodies move together along their paths, and both go back to the pair's time of impact.
+    // Two passes: the times are found first, reading the poses only, each body alone (the team shares the bodies
+    // out with the same results), then the bodies are moved.
     const Real target = 0.25 * m_tuning.speculativeDistance;
-    struct Counts {
-        uint64_t bodies = 0, hits = 0;
-    };
+    const Real fraction = m_tuning.ccdFraction;
     // Body k's motion over the step: its centre's travel, and its turn times its radius. No point of it got farther
     // than |travel| + turn.
     struct Motion {
         Vec3 travel{0.0};
         Real turn = 0.0;
+        Real sweep() const { return glm::length(travel) + turn; }
     };
     const auto motionOf = [&](uint32_t k) {
         if (!m_state.isMoving(k))
@@ -1383,114 +1382,146 @@ void World::continuousCollision() {
             std::acos(std::clamp(std::abs(glm::dot(m_stepStartOrientation[k], m_state.orientation[k])), 0.0, 1.0));
         return Motion{m_state.position[k] - m_stepStartPosition[k], angle * m_radius[k]};
     };
-    const auto isFast = [&](uint32_t k, Real sweep) { return sweep > m_tuning.ccdFraction * m_minExtent[k]; };
-    const auto sweepBody = [&](uint32_t i, Counts& counts) {
-        const Vec3 start = m_stepStartPosition[i];
-        const Vec3 end = m_state.position[i];
-        const Vec3 delta = end - start;
-        const Quat q0 = m_stepStartOrientation[i];
-        const Quat q1 = m_state.orientation[i];
+    const auto isFast = [&](uint32_t k, Real sweep) { return sweep > fraction * m_minExtent[k]; };
+    // Body k's pose at the fraction t of the step.
+    const auto poseOf = [&](uint32_t k, Real t) {
+        const Quat shapeQ =
+            glm::slerp(m_stepStartOrientation[k], m_state.orientation[k], t) * m_state.info[k].shapeFromPrincipal;
+        const Vec3 com = m_stepStartPosition[k] + (m_state.position[k] - m_stepStartPosition[k]) * t;
+        return Transform::fromQuat(com - shapeQ * m_state.info[k].comInShape, shapeQ);
+    };
+    // The first t below `limit` at which a at poseA(t) comes within `target` of b at poseB(t), given that no point
+    // of them closes in faster than `speed` per unit of t; `limit` if there is none.
+    const auto firstContact = [&](uint32_t a, const auto& poseA, uint32_t b, const auto& poseB, Real speed,
+                                  Real limit) {
+        // Already close at the start: the speculative contact and the solver own this pair.
+        Real d = signedDistance(m_shapes[a], poseA(0.0), m_shapes[b], poseB(0.0)).separation;
+        if (d < 2.0 * target)
+            return limit;
+        Real t = 0.0;
+        for (int iteration = 0; iteration < 40 && t < limit; ++iteration) {
+            if (iteration > 0) // the first is the distance at the start, just taken
+                d = signedDistance(m_shapes[a], poseA(t), m_shapes[b], poseB(t)).separation;
+            if (d < target)
+                return t;
+            // No point approaches faster than `speed` per unit of t, so this step cannot skip past the first contact.
+            t += (d - 0.5 * target) / speed;
+        }
+        return limit;
+    };
+    struct Hit {
+        uint32_t body;
+        Real toi;
+    };
+    struct MemberWork {
+        uint64_t bodies = 0;
+        std::vector<Hit> hits;
+    };
+    const auto sweepBody = [&](uint32_t i, MemberWork& work) {
         const Motion motion = motionOf(i);
-        const Real sweep = glm::length(motion.travel) + motion.turn;
+        const Real sweep = motion.sweep();
         if (!isFast(i, sweep))
             return;
-        ++counts.bodies;
-
-        const Quat shapeFromPrincipal = m_state.info[i].shapeFromPrincipal;
-        const Vec3 comInShape = m_state.info[i].comInShape;
-        auto poseAt = [&](Real t) {
-            const Quat q = glm::slerp(q0, q1, t);
-            const Quat shapeQ = q * shapeFromPrincipal;
-            const Vec3 com = start + delta * t;
-            return Transform::fromQuat(com - shapeQ * comInShape, shapeQ);
-        };
-        Aabb swept = m_shapes[i].worldBounds(poseAt(0.0));
-        const Aabb endBox = m_shapes[i].worldBounds(poseAt(1.0));
+        ++work.bodies;
+        const auto pose = [&](Real t) { return poseOf(i, t); };
+        Aabb swept = m_shapes[i].worldBounds(pose(0.0));
+        const Aabb endBox = m_shapes[i].worldBounds(pose(1.0));
         swept.min = glm::min(swept.min, endBox.min);
         swept.max = glm::max(swept.max, endBox.max);
         Real toi = 1.0;
-        // Advances along the body's motion until it comes within `target` of body j, held at its pose xfB.
-        const auto advance = [&](uint32_t j, const Transform& xfB) {
-            // Already close at the start: the speculative contact and the solver own this pair.
-            Real d = signedDistance(m_shapes[i], poseAt(0.0), m_shapes[j], xfB).separation;
-            if (d < 2.0 * target)
-                return;
-            Real t = 0.0;
-            for (int iteration = 0; iteration < 40 && t < toi; ++iteration) {
-                if (iteration > 0) // the first is the distance at the start, just taken
-                    d = signedDistance(m_shapes[i], poseAt(t), m_shapes[j], xfB).separation;
-                if (d < target) {
-                    toi = std::min(toi, t);
-                    break;
-                }
-                // No point of the body approaches faster than `sweep` per unit of t, so this step cannot skip
-                // past the first contact.
-                t += (d - 0.5 * target) / sweep;
-            }
-        };
-        const auto finish = [&] {
-            if (toi < 1.0) {
-                m_state.position[i] = start + delta * toi;
-                m_state.orientation[i] = glm::normalize(glm::slerp(q0, q1, toi));
-                ++counts.hits;
-            }
-        };
         const DynamicTree& anchors = m_broadPhase.tree(ProxyKind::Static);
         anchors.query(swept, [&](int32_t proxy) {
             const uint32_t j = anchors.userId(proxy);
-            advance(j, transform(j));
+            const Transform xfB = transform(j);
+            toi = std::min(toi, firstContact(
+                                    i, pose, j, [&](Real) { return xfB; }, sweep, toi));
             return true;
         });
-        // A dynamic body j needs a sweep when the two moved closer than the pair's speculative contact covered,
-        // spec + max(size i, size j) (World::pairMargin()), while j is not fast: sweep j <= f size j, with f the
-        // ccdFraction. Their approach is at most sweep + sweep j, so that needs sweep + sweep j > spec + size j >=
-        // spec + sweep j / f and sweep + sweep j > spec + size i, hence (for f <= 1) sweep > spec + (1 - f) size i.
-        // The tree holds fat boxes, so most candidates are told apart by their own box after the solve first.
-        const Real fraction = m_tuning.ccdFraction;
-        if (fraction <= 1.0 && !(sweep > m_tuning.speculativeDistance + (1.0 - fraction) * m_minExtent[i]))
-            return finish();
+        // A dynamic body j needs a sweep when the two came closer than the pair's speculative contact covered,
+        // spec + max(size i, size j) (World::pairMargin()); they came at most sweep + sweep j closer. Where j is not
+        // fast (sweep j <= f size j, f the ccdFraction, at most 1) that needs sweep > spec + (1 - f) size i; where
+        // it is, one of the two swept more than (spec + its size) / 2, and that one finds the other. Below both, the
+        // tree is not asked. The tree holds fat boxes, so most candidates are told apart by their own box after the
+        // solve first.
+        const Real spec = m_tuning.speculativeDistance;
+        if (fraction <= 1.0 &&
+            !(sweep > std::min(spec + (1.0 - fraction) * m_minExtent[i], 0.5 * (spec + m_minExtent[i])))) {
+            if (toi < 1.0)
+                work.hits.push_back({i, toi});
+            return;
+        }
         const Aabb reach{swept.min - Vec3(target), swept.max + Vec3(target)};
         const DynamicTree& dynamic = m_broadPhase.tree(ProxyKind::Dynamic);
         dynamic.query(reach, [&](int32_t proxy) {
             const uint32_t j = dynamic.userId(proxy);
             if (j == i)
                 return true;
-            const Transform xfB = transform(j);
-            if (!reach.overlaps(m_shapes[j].worldBounds(xfB)))
-                return true;
-            // The pair's speculative contact covered an approach up to the bodies' size (World::pairMargin()).
             const Motion other = motionOf(j);
-            if (isFast(j, glm::length(other.travel) + other.turn) ||
-                glm::length(motion.travel - other.travel) + motion.turn + other.turn <=
-                    m_tuning.speculativeDistance + std::max(m_minExtent[i], m_minExtent[j]))
+            const bool fast = isFast(j, other.sweep());
+            const Transform xfB = fast ? Transform{} : transform(j);
+            if (!fast && !reach.overlaps(m_shapes[j].worldBounds(xfB)))
                 return true;
-            advance(j, xfB);
+            if (glm::length(motion.travel - other.travel) + motion.turn + other.turn <=
+                spec + std::max(m_minExtent[i], m_minExtent[j]))
+                return true;
+            if (!fast) {
+                toi = std::min(toi, firstContact(
+                                        i, pose, j, [&](Real) { return xfB; }, sweep, toi));
+                return true;
+            }
+            // Both fast: the pair's time, the same from either side (the lower body first, over the whole step),
+            // is the time of both.
+            const uint32_t a = std::min(i, j), b = std::max(i, j);
+            const Real t = firstContact(
+                a, [&](Real u) { return poseOf(a, u); }, b, [&](Real u) { return poseOf(b, u); },
+                motionOf(a).sweep() + motionOf(b).sweep(), 1.0);
+            if (t < 1.0) {
+                toi = std::min(toi, t);
+                work.hits.push_back({j, t});
+            }
             return true;
         });
-        finish();
+        if (toi < 1.0)
+            work.hits.push_back({i, toi});
     };
     // The members claim the bodies in chunks as they go. Split in even halves, the sweeps gained nothing from the
     // second thread in ramps.obj's first 120 frames (0.07 ms a step on one thread and on two); claimed in chunks of
     // 32, 0.04 ms on two (2026-11-27): the bodies that need a sweep are few and come in clusters.
     const size_t n = m_state.size();
     const int members = m_team && n >= kMinBodiesForTeam ? m_team->size() : 1;
-    std::vector<Counts> counts(static_cast<size_t>(members));
+    std::vector<MemberWork> work(static_cast<size_t>(members));
     constexpr size_t kChunk = 32;
     std::atomic<size_t> claimed{0};
     const auto job = [&](int member) {
         for (size_t begin; (begin = claimed.fetch_add(kChunk)) < n;)
             for (size_t k = begin; k < std::min(n, begin + kChunk); ++k)
                 if (m_state.isMoving(static_cast<uint32_t>(k)))
-                    sweepBody(static_cast<uint32_t>(k), counts[static_cast<size_t>(member)]);
+                    sweepBody(static_cast<uint32_t>(k), work[static_cast<size_t>(member)]);
     };
     if (members > 1)
         m_team->run(job);
     else
         job(0);
-    for (const Counts& c : counts) {
-        m_profile.count(Counter::CcdBodies, c.bodies);
-        m_profile.count(Counter::CcdHits, c.hits);
+    // Each body goes back to the earliest of its times (a minimum, so the order of the hits does not matter).
+    std::vector<std::pair<uint32_t, Real>>& moved = m_ccdMoves;
+    moved.clear();
+    for (const MemberWork& w : work) {
+        m_profile.count(Counter::CcdBodies, w.bodies);
+        for (const Hit& hit : w.hits)
+            moved.emplace_back(hit.body, hit.toi);
     }
+    std::sort(moved.begin(), moved.end());
+    uint64_t hits = 0;
+    for (size_t k = 0; k < moved.size(); ++k) {
+        if (k > 0 && moved[k].first == moved[k - 1].first)
+            continue; // sorted by time within a body: the first is the earliest
+        const uint32_t i = moved[k].first;
+        const Real toi = moved[k].second;
+        m_state.position[i] = m_stepStartPosition[i] + (m_state.position[i] - m_stepStartPosition[i]) * toi;
+        m_state.orientation[i] = glm::normalize(glm::slerp(m_stepStartOrientation[i], m_state.orientation[i], toi));
+        ++hits;
+    }
+    m_profile.count(Counter::CcdHits, hits);
 }
 
 void World::updateSleep() {

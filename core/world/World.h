@@ -384,6 +384,7 @@ private:
     std::vector<uint32_t> m_islandMember; // per island root: the member that solves it (splitByIslands())
     std::vector<std::pair<uint32_t, uint32_t>> m_islandLoad;
     std::vector<uint64_t> m_memberLoad;
+    std::vector<std::pair<uint32_t, Real>> m_ccdMoves; // continuousCollision(): (body, time of impact)
     ContactSolverCounters m_solverCounters;
     std::vector<Vec3> m_stepStartPosition;
     std::vector<Quat> m_stepStartOrientation;

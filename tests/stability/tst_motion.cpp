@@ -13,6 +13,16 @@
 using namespace rl;
 using namespace rl::test;
 
+namespace {
+// The projectile speeds of the tunnelling cases.
+void addSpeedRows() {
+    QTest::addColumn<double>("speed");
+    QTest::newRow("30 m/s") << 30.0;
+    QTest::newRow("100 m/s") << 100.0;
+    QTest::newRow("300 m/s") << 300.0;
+}
+} // namespace
+
 class TestMotion : public QObject {
     Q_OBJECT
 private slots:
@@ -264,12 +274,7 @@ private slots:
     }
 
     // A free-standing wall is a dynamic body: the shot is swept against it too (World::continuousCollision()).
-    void shotNeverTunnelsThroughAStandingWall_data() {
-        QTest::addColumn<double>("speed");
-        QTest::newRow("30 m/s") << 30.0;
-        QTest::newRow("100 m/s") << 100.0;
-        QTest::newRow("300 m/s") << 300.0;
-    }
+    void shotNeverTunnelsThroughAStandingWall_data() { addSpeedRows(); }
 
     void shotNeverTunnelsThroughAStandingWall() {
         QFETCH(double, speed);
@@ -291,6 +296,28 @@ private slots:
               "took at least %.1f %% of its momentum",
               speed, struck, kStarts, 100.0 * leastShare);
         QCOMPARE(struck, kStarts);
+    }
+
+    // Two fast bodies go back together to the pair's time of impact (World::continuousCollision()).
+    void headOnShotsNeverPassThrough_data() { addSpeedRows(); }
+
+    void headOnShotsNeverPassThrough() {
+        QFETCH(double, speed);
+        constexpr int kStarts = 10;
+        int met = 0;
+        Real fastestAfter = 0.0;
+        for (int k = 0; k < kStarts; ++k) {
+            const Real offset = k * 2.0 * speed / 60.0 / kStarts; // spread over one step of their closing travel
+            World w = makeWorld(scenes::headOnShots(offset, speed));
+            // Until a quarter of a second after they would have met.
+            run(w, static_cast<int>(std::ceil((3.0 + offset) / (2.0 * speed) * 60.0)) + 15);
+            const Real fastest = std::max(glm::length(w.linearVelocity(0)), glm::length(w.linearVelocity(1)));
+            fastestAfter = std::max(fastestAfter, fastest);
+            met += w.centerOfMass(0).x < w.centerOfMass(1).x && fastest < 0.5 * speed ? 1 : 0;
+        }
+        qInfo("two 0.1 m steel cubes head on at %.0f m/s each: met in %d of %d starts, fastest afterwards %.3g m/s",
+              speed, met, kStarts, fastestAfter);
+        QCOMPARE(met, kStarts);
     }
 
     void spinningPlankNeverTunnels() {

@@ -1474,8 +1474,8 @@ void World::continuousCollision() {
             // is the time of both.
             const uint32_t a = std::min(i, j), b = std::max(i, j);
             const Real t = firstContact(
-                a, [&](Real u) { return poseOf(a, u); }, b, [&](Real u) { return poseOf(b, u); },
-                motionOf(a).sweep() + motionOf(b).sweep(), 1.0);
+                a, [&](Real u) { return poseOf(a, u); }, b, [&](Real u) { return poseOf(b, u); }, sweep + other.sweep(),
+                1.0);
             if (t < 1.0) {
                 toi = std::min(toi, t);
                 work.hits.push_back({j, t});

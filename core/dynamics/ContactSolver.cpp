@@ -23,6 +23,7 @@ namespace {
 constexpr int kRestitutionPasses = 32;
 constexpr Real kRestitutionTolerance = 1e-4;
 constexpr Real kCenterFalloff = ContactSolver::kCenterFalloff;
+constexpr Real kPatchRadius = ContactSolver::kPatchRadius;
 
 Vec3 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec3& rA, const Vec3& rB) {
     return (b.v + glm::cross(b.w, rB)) - (a.v + glm::cross(a.w, rA));
@@ -177,7 +178,7 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
     c.centerA = centerA;
     c.centerB = centerB;
     for (int k = 0; k < m.pointCount; ++k)
-        c.points[k].leverArm = roundedToFloat(glm::length(c.points[k].rA - centerA));
+        c.points[k].leverArm = std::max(roundedToFloat(glm::length(c.points[k].rA - centerA)), kPatchRadius);
     // The tangent block K (2x2, symmetric) at the centre, inverted; the masses are rounded to float as the batches
     // store them.
     const Vec3 aA0 = angularOf(centerA, c.tangent[0]), aA1 = angularOf(centerA, c.tangent[1]);

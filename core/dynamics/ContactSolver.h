@@ -123,6 +123,11 @@ public:
     static constexpr uint8_t kHoldA = 1, kHoldB = 2;
     // A speculative point this far apart (m) weighs a quarter in the friction centre: the speculative distance.
     static constexpr Real kCenterFalloff = 0.02;
+    // Each point's lever arm in the twist limit is at least this (m, 2^-7, exact in float): a point contact stands for
+    // a small patch, so that it resists spin about its normal (MuJoCo's default torsional friction is 5 mm x the normal
+    // force; this is 7.8 mm x the friction coefficient). With none, a box wedged between two others by two corners
+    // spun freely about the line through them, at up to 3.5 rad/s for seconds, and held its pile's island awake.
+    static constexpr Real kPatchRadius = 0.0078125;
     // A side of a manifold held for its constraint (prepare()): kHoldA, kHoldB or 0 for none, and the scale of that
     // side's inverse mass and inertia (0: held still).
     struct Hold {

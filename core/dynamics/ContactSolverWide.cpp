@@ -776,9 +776,10 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         rounded<W>(select(weighed, L3<V>{centerA.x / weights, centerA.y / weights, centerA.z / weights}, centerA));
     centerB =
         rounded<W>(select(weighed, L3<V>{centerB.x / weights, centerB.y / weights, centerB.z / weights}, centerB));
+    const V patchRadius = splat<W>(ContactSolver::kPatchRadius);
     for (uint32_t k = 0; k < at.pointCount; ++k) {
         const L3<V> arm = rA[k] - centerA;
-        leverArm[k] = rounded<W>(sqrtOf<W>(dot(arm, arm)));
+        leverArm[k] = maxOf(rounded<W>(sqrtOf<W>(dot(arm, arm))), patchRadius);
     }
     const L3<V> aA0 = cross(centerA, tangent[0]), aA1 = cross(centerA, tangent[1]);
     const L3<V> aB0 = cross(centerB, tangent[0]), aB1 = cross(centerB, tangent[1]);

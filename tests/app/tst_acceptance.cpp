@@ -282,8 +282,12 @@ private slots:
         // Nothing sinks more than 1 cm (issue 4's mass-ratio row).
         QVERIFY(boxLow > 0.1 - 0.01);
         QVERIFY(ballLow > 0.5 - 0.01);
-        // The ball rolls over the box, not thrown off it: its centre rises by about the box's height, no more.
-        QVERIFY(ballHigh < 0.5 + 0.2 + 0.05);
+        // The ball rolls over the box, not thrown off it: its centre rises by about what the box can lift it, no more.
+        // The box tumbles ahead of the ball and may stand on an edge, 0.2 sqrt(2) m tall, when the ball meets it
+        // again: since point contacts resist spin (2026-11-28, ContactSolver::kPatchRadius) the default run strikes it
+        // twice and the ball's centre rises to 0.815 m on the second (0.70-0.72 m at the other substep counts). The
+        // failure this guards against threw it to 1.1-1.4 m.
+        QVERIFY(ballHigh < 0.5 + 0.2 * std::sqrt(2.0) + 0.05);
         // It was hit. (Where it ends is chaotic: squeezed out from under the ball, it may fly off backwards.)
         QVERIFY(boxFarthest > 3.2);
     }

@@ -2,6 +2,7 @@
 // coincident boxes, a busy scene for 10 minutes, and projectiles against thin walls. (1,000 boxes dropped on a floor:
 // tst_piles, its own test so that ctest runs it beside this one.)
 #include "StabilityFixture.h"
+#include "dynamics/ContactSolver.h"
 #include "io/SceneImport.h"
 #include "scene/SceneLibrary.h"
 
@@ -14,6 +15,16 @@ using namespace rl;
 using namespace rl::test;
 
 namespace {
+// `scene` with every body of one material of friction mu (density 1,000, no bounce), body 1 spinning about the
+// vertical at w0.
+Scene spunAboutTheVertical(Scene scene, Real mu, Real w0) {
+    scene.materials.push_back({"Spun", 1000.0, mu, 0.0});
+    for (BodyDef& body : scene.bodies)
+        body.material = "Spun";
+    scene.bodies[1].angularVelocity = Vec3(0.0, w0, 0.0);
+    return scene;
+}
+
 // The projectile speeds of the tunnelling cases.
 void addSpeedRows() {
     QTest::addColumn<double>("speed");
@@ -94,12 +105,7 @@ private slots:
     // w0^2 / (2 mu g d 6) before it stops.
     void spinningCubeStopsByTwistFriction() {
         const Real mu = 0.1, w0 = 2.0, g = 9.81;
-        Scene scene = scenes::stack(1);
-        scene.materials.push_back({"Slippery", 1000.0, mu, 0.0});
-        for (BodyDef& body : scene.bodies)
-            body.material = "Slippery";
-        scene.bodies[1].angularVelocity = Vec3(0.0, w0, 0.0);
-        World w = makeWorld(scene);
+        World w = makeWorld(spunAboutTheVertical(scenes::stack(1), mu, w0));
         const Vec3 start = w.centerOfMass(1);
         run(w, 120);
         const Quat turn = w.rotationSinceStart(1);
@@ -112,6 +118,42 @@ private slots:
         QVERIFY(std::abs(angle - expected) < 0.03 * expected);
         QVERIFY(moved < 1e-3);
         QVERIFY(glm::length(w.angularVelocity(1)) < 1e-3);
+    }
+
+    // A point contact stands for a small patch (ContactSolver::kPatchRadius, r): a ball spun about the vertical on the
+    // floor feels the twist torque mu r m g and (I = 0.4 m R^2) turns through w0^2 0.4 R^2 / (2 mu r g) before it
+    // stops, then stays where it is. With no patch a lone point held no twist at all and the ball spun for ever.
+    void spinningBallStopsByPatchFriction_data() {
+        QTest::addColumn<Real>("mu");
+        QTest::addColumn<Real>("w0");
+        QTest::newRow("mu 0.5, 10 rad/s") << 0.5 << 10.0;
+        QTest::newRow("mu 0.2, 4 rad/s") << 0.2 << 4.0;
+        QTest::newRow("mu 1.0, 20 rad/s") << 1.0 << 20.0;
+    }
+    void spinningBallStopsByPatchFriction() {
+        QFETCH(Real, mu);
+        QFETCH(Real, w0);
+        const Real g = 9.81, radius = 0.1, r = ContactSolver::kPatchRadius;
+        World w = makeWorld(spunAboutTheVertical(scenes::drop(0.0, 0.0), mu, w0));
+        const Vec3 start = w.centerOfMass(1);
+        const Real expected = w0 * w0 * 0.4 * radius * radius / (2.0 * mu * r * g);
+        const Real stopsAt = w0 * 0.4 * radius * radius / (mu * r * g);
+        // The angle turned, by the trapezoid rule over the frames (the ball turns more than half a turn).
+        Real angle = 0.0, spinLate = 0.0, previous = w0;
+        run(w, static_cast<int>(std::ceil((stopsAt + 1.0) * 60.0)), [&](int f) {
+            const Real spin = glm::length(w.angularVelocity(1));
+            angle += 0.5 * (previous + spin) / 60.0;
+            previous = spin;
+            if (f / 60.0 > stopsAt + 0.5)
+                spinLate = std::max(spinLate, glm::length(w.angularVelocity(1)));
+        });
+        const Real moved = glm::length(w.centerOfMass(1) - start);
+        qInfo("ball spun at %.0f rad/s, mu %.1f: turned %.3f rad, expected %.3f rad (%.2f %%); centre moved %.3g m, "
+              "spin after it should have stopped %.3g rad/s",
+              w0, mu, angle, expected, 100.0 * (angle - expected) / expected, moved, spinLate);
+        QVERIFY(std::abs(angle - expected) < 0.01 * expected);
+        QVERIFY(moved < 1e-3);
+        QVERIFY(spinLate < 1e-3);
     }
 
     void tumblingIntermediateAxisFlips() {

@@ -29,13 +29,15 @@ private slots:
     //
     // Under AddressSanitizer (CI's second build, about 45 s a pile there) two of the five piles run: that build looks
     // for memory and undefined-behaviour errors, which the same code paths show in two piles as in five, and CI has
-    // 30 minutes in all. The Release run of ctest runs all five.
+    // 30 minutes in all. The Release run of ctest runs all seven.
     void thousandBoxesSettle_data() {
         QTest::addColumn<unsigned>("seed");
 #ifdef __SANITIZE_ADDRESS__
         const std::initializer_list<unsigned> seeds = {1u, 9u};
 #else
-        const std::initializer_list<unsigned> seeds = {1u, 6u, 9u, 13u, 14u};
+        // Seeds 47 and 124 still moved at 10 s until point contacts resisted spin (ContactSolver::kPatchRadius,
+        // 2026-11-28): in 124 a box wedged by two corners spun in place at up to 3.5 rad/s and held 927 boxes awake.
+        const std::initializer_list<unsigned> seeds = {1u, 6u, 9u, 13u, 14u, 47u, 124u};
 #endif
         for (unsigned seed : seeds)
             QTest::addRow("seed %u", seed) << seed;

@@ -1314,6 +1314,11 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
                 bodies[k + 1].dp = local.position[k] - scratch.startPosition[k];
                 bodies[k + 1].dR =
                     glm::mat3_cast(glm::normalize(local.orientation[k] * glm::conjugate(scratch.startOrientation[k])));
+                // The inverse inertia at the pose just reached, for the relax sweep and the next substep's. Kept from
+                // the step's start, a box spun about its long diagonal between two corner contacts gained 19 % of its
+                // energy in 10 s at 5 rad/s: the sweeps' impulses turned it in the metric of a pose it had left.
+                if (rotation)
+                    bodies[k + 1].invInertia = local.worldInverseInertia(k);
             }
             toSolver(mine);
             barrier();

@@ -27,8 +27,8 @@ private slots:
     // since the narrowphase drops pairs whose boxes are apart (2026-11-25), 67 do: 21, 27, 33, 67 and 69 do not. At
     // 0522310 (2026-11-27) all of seeds 1-72 came to rest, and 143 of seeds 1-144 (README, "Hard cases").
     //
-    // Under AddressSanitizer (CI's second build, about 45 s a pile there) two of the five piles run: that build looks
-    // for memory and undefined-behaviour errors, which the same code paths show in two piles as in five, and CI has
+    // Under AddressSanitizer (CI's second build, about 45 s a pile there) two of the seven piles run: that build looks
+    // for memory and undefined-behaviour errors, which the same code paths show in two piles as in seven, and CI has
     // 30 minutes in all. The Release run of ctest runs all seven.
     void thousandBoxesSettle_data() {
         QTest::addColumn<unsigned>("seed");

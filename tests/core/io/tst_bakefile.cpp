@@ -70,7 +70,9 @@ private slots:
         const Bake bake = test::makeFixtureBake(61, 60.0);
         const std::string text = toText(bake);
         QVERIFY(text.rfind("# rigidlab-bake 2 fps=60 frames=61 bodies=3 columns=id,x,y,z,qw,qx,qy,qz\n", 0) == 0);
-        QVERIFY(text.find(std::string(test::fixtureObjText()) + "!\n") != std::string::npos);
+        std::string objAndEnd(test::fixtureObjText());
+        objAndEnd += "!\n";
+        QVERIFY(text.find(objAndEnd) != std::string::npos);
 
         BakeFileInfo info;
         Result<Bake> back = readBake(text, "fixture.bake", &info);

@@ -21,6 +21,7 @@
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <set>
 
 namespace rl {
@@ -325,14 +326,16 @@ void InspectorWidget::showOverride(OverrideRow row, const std::vector<std::optio
         row.enabled->setTristate(false);
         row.enabled->setChecked(!set.empty() && *set.begin());
     }
-    std::optional<double> common = values.empty() ? std::nullopt : values.front();
-    for (const auto& v : values)
-        if (v != common)
-            common = std::nullopt;
     const bool allSet = set.size() == 1 && *set.begin();
     const bool noneSet = set.size() == 1 && !*set.begin();
-    // Unset overrides show the material's value, greyed out, so the user sees what the body uses.
-    row.value->setValue(allSet && common ? *common : (noneSet && fallback ? *fallback : row.value->minimum()));
+    // One value shows where every body has the same; unset overrides show the material's value, greyed out, so the
+    // user sees what the body uses.
+    double shown = row.value->minimum();
+    if (allSet && std::all_of(values.begin(), values.end(), [&](const auto& v) { return *v == *values.front(); }))
+        shown = *values.front();
+    else if (noneSet && fallback)
+        shown = *fallback;
+    row.value->setValue(shown);
     row.value->setEnabled(allSet);
 }
 

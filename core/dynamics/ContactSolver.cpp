@@ -265,9 +265,12 @@ void ContactSolver::prepare(std::span<Manifold* const> manifolds, std::span<cons
     // The constraints are set up straight into the batches (buildBatches()); the whole records are kept as well only
     // where something reads them after prepare(). Written in manifold order by a pass of their own, 620 bytes each,
     // and read back level by level, they cost that pass alone 1.8-1.9 ms of the 4.9 ms a step of large_pyramid's
-    // prepare_contacts on one thread (its first 120 frames, 2026-11-27).
-    m_kept = m_keepConstraints || settings.restitution;
-    m_constraints.resize(m_kept ? m_count : 0);
+    // prepare_contacts on one thread (its first 120 frames, 2026-11-27). The restitution pass reads only the records
+    // of the constraints that may bounce (mayBounce()), so only those are kept for it (see m_constraints).
+    m_kept = m_keepConstraints;
+    m_bounceOnly = !m_kept && settings.restitution;
+    m_constraints.resize(m_kept || m_bounceOnly ? m_count : 0);
+    m_bouncing.assign(m_bounceOnly ? m_count : 0, 0);
     scheduleLevels(bodies.size(), bodyPart, solverIndexA, solverIndexB);
     const SetUpInputs inputs{manifolds, solverIndexA, solverIndexB, friction, restitution, bodies, centers, held};
     buildBatches(inputs, parallelFor);
@@ -483,8 +486,12 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
                                 inputs.friction[index], inputs.restitution[index],
                                 inputs.held.empty() ? Hold{} : inputs.held[index], inputs.bodies, inputs.centers, m_h,
                                 m_settings);
-                if (m_kept)
+                if (m_kept) {
                     m_constraints[index] = c;
+                } else if (m_bounceOnly && mayBounce(c)) {
+                    m_constraints[index] = c;
+                    m_bouncing[index] = 1;
+                }
                 std::copy(c.order, c.order + 4, m_order[index].begin());
                 batch.bodyA[l] = c.bodyA;
                 batch.bodyB[l] = c.bodyB;
@@ -521,8 +528,17 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
     });
 }
 
+bool ContactSolver::mayBounce(const ContactConstraint& c) const {
+    if (c.restitution == 0.0)
+        return false;
+    for (int k = 0; k < c.pointCount; ++k)
+        if (!(c.points[k].relativeVelocity > -m_settings.restitutionThreshold))
+            return true;
+    return false;
+}
+
 void ContactSolver::syncFromBatches() const {
-    if (!m_batchesAhead || !m_kept)
+    if (!m_batchesAhead || !(m_kept || m_bounceOnly))
         return;
     m_batchesAhead = false;
     if (m_width == 8)
@@ -538,7 +554,10 @@ void ContactSolver::syncFromBatches(const BatchStore<W>& store) const {
         const BatchLayout& at = m_batchLayout[n];
         for (uint32_t lane = 0; lane < at.lanes; ++lane) {
             const int l = static_cast<int>(lane);
-            ContactConstraint& c = m_constraints[m_solveOrder[at.first + lane]];
+            const uint32_t i = m_solveOrder[at.first + lane];
+            if (!hasRecord(i))
+                continue;
+            ContactConstraint& c = m_constraints[i];
             c.frictionImpulse[0] = batch.frictionImpulse[0].v[l];
             c.frictionImpulse[1] = batch.frictionImpulse[1].v[l];
             c.twistImpulse = batch.twistImpulse.v[l];
@@ -737,7 +756,11 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
         return;
     syncFromBatches();
     const Real h = m_h;
-    for (ContactConstraint& c : m_constraints) {
+    // Only the constraints that may bounce have records (unless all are kept): the others have nothing to do here.
+    for (size_t i = 0; i < m_constraints.size(); ++i) {
+        if (!hasRecord(i))
+            continue;
+        ContactConstraint& c = m_constraints[i];
         if (c.restitution == 0.0)
             continue;
         SolverBody& a = bodies[c.bodyA];
@@ -785,35 +808,43 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
 
 void ContactSolver::storeImpulses(std::span<Manifold* const> manifolds, const ParallelFor& parallelFor) const {
     const size_t count = std::min(manifolds.size(), m_count);
-    // The batches hold the impulses after any sweep, and also right after prepare() (as the constraints do).
+    // The batches hold the impulses after any sweep, and also right after prepare() (as the constraints do). After
+    // the restitution pass the records are ahead: all of them where kept, else those of the constraints that may
+    // bounce, the others' being still in the batches.
     if (m_batchesAhead || !m_kept) {
+        const bool bouncersFromRecords = !m_batchesAhead && m_bounceOnly;
         if (m_width == 8)
-            storeFromBatches(m_store8, manifolds.first(count), parallelFor);
+            storeFromBatches(m_store8, manifolds.first(count), parallelFor, bouncersFromRecords);
         else
-            storeFromBatches(m_store4, manifolds.first(count), parallelFor);
+            storeFromBatches(m_store4, manifolds.first(count), parallelFor, bouncersFromRecords);
         return;
     }
     shareOut(parallelFor, count, [&](size_t begin, size_t end) {
-        for (size_t i = begin; i < end; ++i) {
-            const ContactConstraint& c = m_constraints[i];
-            Manifold& m = *manifolds[i];
-            for (int k = 0; k < c.pointCount; ++k)
-                m.points[k].normalImpulse = c.points[k].normalImpulse;
-            m.frictionImpulse = c.frictionImpulse[0] * c.tangent[0] + c.frictionImpulse[1] * c.tangent[1];
-            m.twistImpulse = c.twistImpulse;
-        }
+        for (size_t i = begin; i < end; ++i)
+            storeRecord(m_constraints[i], *manifolds[i]);
     });
+}
+
+void ContactSolver::storeRecord(const ContactConstraint& c, Manifold& m) {
+    for (int k = 0; k < c.pointCount; ++k)
+        m.points[k].normalImpulse = c.points[k].normalImpulse;
+    m.frictionImpulse = c.frictionImpulse[0] * c.tangent[0] + c.frictionImpulse[1] * c.tangent[1];
+    m.twistImpulse = c.twistImpulse;
 }
 
 template <int W>
 void ContactSolver::storeFromBatches(const BatchStore<W>& store, std::span<Manifold* const> manifolds,
-                                     const ParallelFor& parallelFor) const {
+                                     const ParallelFor& parallelFor, bool bouncersFromRecords) const {
     // The same numbers as syncFromBatches() and then the loop above, but straight from the batches, in manifold
     // order: the member that writes a manifold here is the one that reads it in the next step's prepare(), so its
     // cache lines need not cross to the other core. (Written by one thread after syncing, the manifolds were read
     // half by the other core, whose half of the set-up then took twice as long as the writer's half.)
     shareOut(parallelFor, manifolds.size(), [&](size_t begin, size_t end) {
         for (size_t i = begin; i < end; ++i) {
+            if (bouncersFromRecords && m_bouncing[i] != 0) {
+                storeRecord(m_constraints[i], *manifolds[i]);
+                continue;
+            }
             const Batch<W>& batch = store.batches[m_laneOf[i] / W];
             const uint32_t lane = m_laneOf[i] % W;
             Manifold& m = *manifolds[i];

@@ -5,6 +5,7 @@
 #include "collision/Manifold.h"
 #include "math/Types.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -235,11 +236,16 @@ public:
     static void setWideSetUp(bool on) { s_wideSetUp = on; }
 
     // The whole constraint records, in manifold order, with the impulses of the last sweep. prepare() keeps them only
-    // when asked to (keepConstraints()) or when restitution is on (its pass reads them); else this is empty. The
-    // sequential sweeps and the restitution pass work on these records.
+    // when asked to (keepConstraints()); else this is empty. The sequential sweeps work on these records.
     const std::vector<ContactConstraint>& constraints() const {
+        static const std::vector<ContactConstraint> kNone;
         syncFromBatches();
-        return m_constraints;
+        return m_kept ? m_constraints : kNone;
+    }
+    // How many records the last prepare() kept for the restitution pass alone (restitution on, the records not kept
+    // whole): those of the constraints that may bounce (mayBounce()).
+    size_t bounceRecords() const {
+        return m_bounceOnly ? static_cast<size_t>(std::count(m_bouncing.begin(), m_bouncing.end(), uint8_t(1))) : 0;
     }
     // For tests: keep the records at every prepare() from now on (the sequential sweeps need them).
     void keepConstraints(bool keep) { m_keepConstraints = keep; }
@@ -327,7 +333,12 @@ private:
     void syncFromBatches(const BatchStore<W>& store) const;
     template <int W>
     void storeFromBatches(const BatchStore<W>& store, std::span<Manifold* const> manifolds,
-                          const ParallelFor& parallelFor) const;
+                          const ParallelFor& parallelFor, bool bouncersFromRecords) const;
+    // Whether the restitution pass can bounce a point of c: its restitution is not zero and a point approached faster
+    // than the threshold (applyRestitution() asks, besides, that the point pushed back in the sweeps).
+    bool mayBounce(const ContactConstraint& c) const;
+    // A record's impulses into its manifold.
+    static void storeRecord(const ContactConstraint& c, Manifold& m);
     // The sweeps over batches begin..end of W lanes (ContactSolverWide.cpp).
     void warmStartBatches4(std::span<SolverBody> bodies, size_t begin, size_t end);
     void warmStartBatches8(std::span<SolverBody> bodies, size_t begin, size_t end);
@@ -346,22 +357,30 @@ private:
     bool setUpBatch8(const SetUpInputs& inputs, size_t b);
     size_t batchCount() const { return m_width == 8 ? m_store8.batches.size() : m_store4.batches.size(); }
     void buildBatches(const SetUpInputs& inputs, const ParallelFor& parallelFor);
-    // Copies the batches' impulses and impact records back to m_constraints, if a batched sweep ran since and the
-    // records are kept (m_kept).
+    // Copies the batches' impulses and impact records back to m_constraints, if a batched sweep ran since and
+    // records are kept (m_kept, or m_bounceOnly for those of the constraints that may bounce).
     void syncFromBatches() const;
+    bool hasRecord(size_t i) const { return m_kept || (m_bounceOnly && m_bouncing[i] != 0); }
     void scheduleLevels(size_t bodyCount, std::span<const uint8_t> bodyPart, std::span<const uint32_t> bodyA,
                         std::span<const uint32_t> bodyB);
     void warmStartOne(std::span<SolverBody> bodies, const ContactConstraint& c);
     void solveOne(std::span<SolverBody> bodies, ContactConstraint& c, bool useBias);
 
-    size_t m_count = 0;                                   // constraints (one per manifold) of the last prepare()
-    mutable std::vector<ContactConstraint> m_constraints; // empty unless m_kept
-    bool m_kept = false;                                  // prepare() filled m_constraints
-    bool m_keepConstraints = false;                       // keepConstraints()
-    std::vector<std::array<uint8_t, 4>> m_order;          // per constraint: its ContactConstraint::order
-    std::vector<uint8_t> m_batchKey;                      // per constraint: its group within its level (buildBatches())
-    std::vector<BatchLayout> m_batchLayout;               // per batch (buildBatches())
-    std::vector<uint32_t> m_laneOf;     // per constraint: its batch times the lane width, plus its lane
+    size_t m_count = 0; // constraints (one per manifold) of the last prepare()
+    // Every record (m_kept); or, with restitution on, only those of the constraints that may bounce (m_bounceOnly,
+    // m_bouncing); else empty. With a record of 620 bytes written for every constraint and the restitution pass
+    // looking at each, ramps.obj's first 120 frames took 100-123 ms in prepare_contacts and 14-19 ms in restitution;
+    // with the records of those that may bounce only, 73-93 ms and 3.5-4.3 ms, and store_impulses 11-14 ms against
+    // 14-19 ms (three interleaved runs of each, one thread, the same frames; Intel Xeon, 2026-11-29).
+    mutable std::vector<ContactConstraint> m_constraints;
+    bool m_kept = false;                         // prepare() filled every record of m_constraints
+    bool m_bounceOnly = false;                   // prepare() filled the records of the constraints that may bounce
+    std::vector<uint8_t> m_bouncing;             // per constraint, when m_bounceOnly: 1 if its record is filled
+    bool m_keepConstraints = false;              // keepConstraints()
+    std::vector<std::array<uint8_t, 4>> m_order; // per constraint: its ContactConstraint::order
+    std::vector<uint8_t> m_batchKey;             // per constraint: its group within its level (buildBatches())
+    std::vector<BatchLayout> m_batchLayout;      // per batch (buildBatches())
+    std::vector<uint32_t> m_laneOf;              // per constraint: its batch times the lane width, plus its lane
     std::vector<uint32_t> m_solveOrder; // constraint indices, level by level (grouped within a level: buildBatches())
     std::vector<uint8_t> m_segment;     // per constraint: its part, or kBoundarySegment
     size_t m_segmentLevelStart[kParts + 2] = {};

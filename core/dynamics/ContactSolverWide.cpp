@@ -895,8 +895,18 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         if (impact[l] != 0)
             std::stable_sort(order.begin(), order.begin() + m.pointCount,
                              [&](uint8_t x, uint8_t y) { return m.points[x].separation < m.points[y].separation; });
-        if (m_kept)
+        if (m_kept) {
             m_constraints[i] = record(l);
+        } else if (m_bounceOnly && restitution[l] != 0.0) {
+            // mayBounce(), on the lane's values: most constraints have no point approaching fast enough.
+            bool fast = false;
+            for (int k = 0; k < m.pointCount; ++k)
+                fast = fast || !(relativeVelocity[k][l] > -m_settings.restitutionThreshold);
+            if (fast) {
+                m_constraints[i] = record(l);
+                m_bouncing[i] = 1;
+            }
+        }
         if (impact[l] == 0)
             continue;
         for (int k = 0; k < m.pointCount; ++k) {

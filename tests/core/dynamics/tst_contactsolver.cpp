@@ -307,7 +307,8 @@ private slots:
         const int constraints = row.constraints;
         std::vector<SolverBody> sequential = p.bodies, batched = p.bodies;
         ContactSolver a, b;
-        a.keepConstraints(true); // the sequential sweeps work on the records (restitution, on here, keeps them too)
+        a.keepConstraints(true); // the sequential sweeps work on the records
+        b.keepConstraints(true); // to compare them below
         prepare(a, p, partSpan);
         prepare(b, p, partSpan);
         int impacts = 0;
@@ -461,9 +462,11 @@ private slots:
             for (int wide = 0; wide < 2; ++wide) {
                 ContactSolver::setWideSetUp(wide == 1);
                 ContactSolver solver;
+                // Every record kept, to compare them all (without, only those that may bounce are kept: see
+                // restitutionReadsOnlyTheBouncers()).
+                solver.keepConstraints(restitution);
                 prepare(solver, p, partSpan, restitution, {}, gravity);
                 ContactSolver::setWideSetUp(true);
-                // Without restitution nothing reads the records: the set-up goes straight into the batches.
                 QCOMPARE(solver.constraints().size(), restitution ? p.manifolds.size() : size_t(0));
                 records[wide] = solver.constraints();
                 result[wide] = p.bodies;
@@ -544,6 +547,63 @@ private slots:
         ContactSolver::setWidestLanes(8);
     }
 
+    // With restitution on and the records not kept whole, prepare() keeps only those of the constraints that may
+    // bounce, and the restitution pass reads only those: the velocities after it and the stored impulses are those
+    // of the solver that keeps every record, to the bit, set up in vectors or one by one.
+    void restitutionReadsOnlyTheBouncers_data() { batchesGiveTheSequentialNumbers_data(); }
+    void restitutionReadsOnlyTheBouncers() {
+        Row row = fetchRow(7);
+        Problem& p = row.problem;
+        for (size_t i = 0; i < p.restitution.size(); ++i)
+            p.restitution[i] = i % 2 == 0 ? 0.5 : 0.0;
+        const Vec3 gravity(0.0, -9.81, 0.0);
+        for (const bool wideSetUp : {false, true}) {
+            std::vector<SolverBody> result[2];
+            std::vector<Manifold> stored[2];
+            uint64_t rows[2] = {};
+            size_t records[2] = {};
+            for (int kept = 0; kept < 2; ++kept) {
+                ContactSolver::setWideSetUp(wideSetUp);
+                ContactSolver solver;
+                solver.keepConstraints(kept == 1);
+                prepare(solver, p, row.partSpan(), true, {}, gravity);
+                ContactSolver::setWideSetUp(true);
+                records[kept] = kept == 1 ? solver.constraints().size() : solver.bounceRecords();
+                result[kept] = p.bodies;
+                for (int substep = 0; substep < 3; ++substep) {
+                    solver.warmStart(result[kept]);
+                    solver.solve(result[kept], true);
+                    solver.solve(result[kept], false);
+                }
+                solver.applyRestitution(result[kept]);
+                rows[kept] = solver.counters().restitutionRows;
+                stored[kept] = p.manifolds;
+                std::vector<Manifold*> pointers;
+                for (Manifold& m : stored[kept])
+                    pointers.push_back(&m);
+                solver.storeImpulses(pointers);
+            }
+            for (size_t i = 0; i < p.bodies.size(); ++i)
+                QVERIFY(sameBits(result[0][i].v, result[1][i].v) && sameBits(result[0][i].w, result[1][i].w));
+            for (size_t i = 0; i < p.manifolds.size(); ++i) {
+                QVERIFY(sameBits(stored[0][i].frictionImpulse, stored[1][i].frictionImpulse));
+                QCOMPARE(std::bit_cast<uint64_t>(stored[0][i].twistImpulse),
+                         std::bit_cast<uint64_t>(stored[1][i].twistImpulse));
+                for (int k = 0; k < p.manifolds[i].pointCount; ++k)
+                    QCOMPARE(std::bit_cast<uint64_t>(stored[0][i].points[k].normalImpulse),
+                             std::bit_cast<uint64_t>(stored[1][i].points[k].normalImpulse));
+            }
+            QCOMPARE(rows[0], rows[1]);
+            qInfo("%s set-up: %zu of %zu records kept, %llu restitution rows", wideSetUp ? "vector" : "scalar",
+                  records[0], records[1], static_cast<unsigned long long>(rows[0]));
+            QCOMPARE(records[1], p.manifolds.size());
+            QVERIFY(records[0] < records[1]);
+            if (!row.chain)
+                QVERIFY(records[0] > 0 && rows[0] > 0);
+        }
+        ContactSolver::setWidestLanes(8);
+    }
+
     // A constraint that holds one side reads that body's velocity but never moves it (to the bit), so the other body
     // is stopped by it as by an anchor: body 1 (held, at rest) under body 2 (falling onto it at 3 m/s).
     void aHeldSideIsReadButNotMoved_data() {
@@ -598,7 +658,8 @@ private slots:
         const std::span<const uint8_t> partSpan = parts ? std::span<const uint8_t>(part) : std::span<const uint8_t>();
         std::vector<SolverBody> one = p.bodies, two = p.bodies;
         ContactSolver a, b;
-        a.keepConstraints(true); // the sequential sweeps work on the records (restitution, on here, keeps them too)
+        a.keepConstraints(true); // the sequential sweeps work on the records
+        b.keepConstraints(true); // to compare them below
         prepare(a, p, partSpan);
         prepare(b, p, partSpan);
         for (int substep = 0; substep < 4; ++substep) {

@@ -110,9 +110,12 @@ void detectBox(ConvexPolyhedron& poly, Real scale) {
             return;
     }
     for (const Vec3& v : poly.vertices)
-        for (int i = 0; i < 3; ++i)
-            if (std::abs(std::abs(glm::dot(v - box.center, box.axis[i])) - box.half[i]) > kFit * scale)
+        for (int i = 0; i < 3; ++i) {
+            const Real along = std::abs(glm::dot(v - box.center, box.axis[i]));
+            if (std::abs(along - box.half[i]) > kFit * scale)
                 return;
+            box.reach[i] = std::max(box.reach[i], along);
+        }
     bool filled[3][4] = {};
     for (uint32_t e = 0; e < 12; ++e) {
         const Vec3 a = poly.vertices[poly.edges[e].v0], b = poly.vertices[poly.edges[e].v1];
@@ -206,8 +209,21 @@ Aabb Shape::localBounds() const {
 }
 
 Aabb Shape::worldBounds(const Transform& xf) const {
+    if (kind != ShapeKind::Sphere && polyhedron && polyhedron->isBox) {
+        // A box: its centre plus, along each world axis, the sum of its half extents times |that axis . its axes|.
+        // The reaches (the vertices' largest offsets along the box's axes) stand in for the half extents, so the
+        // box holds every vertex, and a relative 1e-14 covers the rounding.
+        const ConvexPolyhedron::BoxFeatures& b = polyhedron->box;
+        const Vec3 center = xf.apply(b.center);
+        Vec3 extent(0.0);
+        for (int i = 0; i < 3; ++i)
+            extent += glm::abs(xf.rotate(b.axis[i])) * b.reach[i];
+        const Vec3 scale = glm::abs(center) + extent;
+        extent += Vec3(1e-14 * (scale.x + scale.y + scale.z));
+        return {center - extent, center + extent};
+    }
     if (kind == ShapeKind::Polyhedron && polyhedron->vertices.size() < kHillClimbMinVertices) {
-        // A small hull (a box from an OBJ file): moving its few vertices once is cheaper than six support queries,
+        // A small hull: moving its few vertices once is cheaper than six support queries,
         // and their extremes are the same tight box.
         const std::vector<Vec3>& vertices = polyhedron->vertices;
         Aabb box{xf.apply(vertices[0]), xf.apply(vertices[0])};

@@ -65,6 +65,7 @@ struct ConvexPolyhedron {
         Vec3 center{0.0};
         Vec3 axis[3];        // unit, orthonormal, right-handed
         Real half[3] = {};   // half extents along the axes
+        Real reach[3] = {};  // the largest |(v - center) . axis[i]| over the vertices: half[i] to within the fit
         uint32_t face[3][2]; // face index with normal +axis[i] ([i][0]) and -axis[i] ([i][1])
         uint32_t edge[3][4]; // edge index parallel to axis[i]: bit 0 set if it lies on the - side of axis[(i+1)%3],
                              // bit 1 if on the - side of axis[(i+2)%3]

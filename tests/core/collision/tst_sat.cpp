@@ -128,6 +128,25 @@ private slots:
                 QCOMPARE(glm::dot(middle, f.axis[(i + 2) % 3]) < 0.0, (bits & 2) != 0);
             }
         }
+        // A box's world bounds come from its axes and reaches (Shape::worldBounds()): they hold every vertex, and
+        // are the vertices' own box to within the fit of a six-decimal corner.
+        std::mt19937_64 rng(5);
+        std::uniform_real_distribution<Real> u(-3.0, 3.0);
+        Real widest = 0.0;
+        for (int i = 0; i < 200; ++i) {
+            const Transform xf = Transform::fromQuat(Vec3(u(rng), u(rng), u(rng)), randomRotation(rng));
+            Aabb vertexBox{Vec3(1e9), Vec3(-1e9)};
+            for (const Vec3& v : s.polyhedron->vertices) {
+                vertexBox.min = glm::min(vertexBox.min, xf.apply(v));
+                vertexBox.max = glm::max(vertexBox.max, xf.apply(v));
+            }
+            const Aabb got = s.worldBounds(xf);
+            for (int axis = 0; axis < 3; ++axis) {
+                QVERIFY(got.min[axis] <= vertexBox.min[axis] && got.max[axis] >= vertexBox.max[axis]);
+                widest = std::max({widest, vertexBox.min[axis] - got.min[axis], got.max[axis] - vertexBox.max[axis]});
+            }
+        }
+        QVERIFY2(widest < (kind == 2 ? 1e-5 : 1e-12), qPrintable(QString::number(widest)));
     }
 
     // Two boxes measured by projection give the general query's answer: the same kind of feature, the same face or

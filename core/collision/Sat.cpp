@@ -139,29 +139,25 @@ SatResult satBoxes(const Shape& a, const Shape& b, const Mat3& R, const Vec3& p,
     edges.feature = SatFeature::EdgePair;
     Vec3 bestAxis(0.0);
     int bestI = -1, bestJ = -1;
+    // The axis L = ua_i x vb_j, not normalised: each box's extent along it comes from the |ua . vb| above, since
+    // |L . ua_k| = |vb_j . ua_m| and |L . vb_k| = |ua_i . vb_m| for the third indices m (both frames right-handed),
+    // and the separation is the projections' difference over |L|: one division an axis, no normalising.
     for (int i = 0; i < 3 && !(edges.separation > options.earlyOut); ++i)
         for (int j = 0; j < 3 && !(edges.separation > options.earlyOut); ++j) {
-            Vec3 axis = glm::cross(ba.axis[i], vb[j]);
+            const Vec3 axis = glm::cross(ba.axis[i], vb[j]);
             const Real len = glm::length(axis);
             // Parallel edges give no axis of their own; the face axes next to them cover that case.
             if (!(len > 1e-6))
                 continue;
-            axis /= len;
-            Real extentA = 0.0, extentB = 0.0;
-            for (int k = 0; k < 3; ++k) {
-                extentA += ba.half[k] * std::abs(glm::dot(axis, ba.axis[k]));
-                extentB += bb.half[k] * std::abs(glm::dot(axis, vb[k]));
-            }
-            Real offset = glm::dot(axis, d);
-            if (offset < 0.0) {
-                axis = -axis;
-                offset = -offset;
-            }
-            const Real sep = offset - extentA - extentB;
+            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            const Real extentA = ba.half[i1] * absDot[i2][j] + ba.half[i2] * absDot[i1][j];
+            const Real extentB = bb.half[j1] * absDot[i][j2] + bb.half[j2] * absDot[i][j1];
+            const Real offset = glm::dot(axis, d);
+            const Real sep = (std::abs(offset) - extentA - extentB) / len;
             if (sep > edges.separation) {
                 edges.separation = sep;
-                edges.normal = axis;
-                bestAxis = axis;
+                bestAxis = (offset < 0.0 ? -1.0 / len : 1.0 / len) * axis;
+                edges.normal = bestAxis;
                 bestI = i;
                 bestJ = j;
             }

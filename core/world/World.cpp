@@ -254,6 +254,22 @@ void World::step() {
     m_profile.count(Counter::Steps, 1);
 }
 
+namespace {
+
+// Bodies ahead whose polyhedra the loops over bodies and pairs fetch (refreshTransforms(), the narrowphase).
+constexpr size_t kShapeAhead = 6;
+
+// Fetches a shape's polyhedron record (its box features and the vectors' pointers) into the cache.
+void prefetchPolyhedron(const Shape& shape) {
+    if (const ConvexPolyhedron* p = shape.polyhedron.get()) {
+        const char* bytes = reinterpret_cast<const char*>(p);
+        for (size_t line = 0; line < sizeof(ConvexPolyhedron); line += 64)
+            __builtin_prefetch(bytes + line);
+    }
+}
+
+} // namespace
+
 void World::refreshTransforms() {
     // Bodies move only in solve() and CCD, both after the narrowphase, so these stay valid for the whole of
     // broadphase and narrowphase. Every body, not only the moving ones: one that fell asleep last step moved first.
@@ -269,6 +285,9 @@ void World::refreshTransforms() {
     const auto refresh = [&](size_t begin, size_t end) {
         for (size_t k = begin; k < end; ++k) {
             const uint32_t i = static_cast<uint32_t>(k);
+            // Each body's polyhedron sits in a heap block of its own: fetch a later body's while this one is taken.
+            if (k + kShapeAhead < end)
+                prefetchPolyhedron(m_shapes[k + kShapeAhead]);
             m_transforms[i] = transform(i);
             m_reinsert[i] = 0;
             if (m_state.isStatic(i))
@@ -519,7 +538,7 @@ void World::findAndCollidePairs() {
             }
             return;
         }
-        tests.push_back({m_pairContacts[i], margin});
+        tests.push_back({m_pairContacts[i], a, b, margin});
     };
     // Collides the pairs in `tests`; returns how many.
     const auto collideTests = [&](const std::vector<NarrowTest>& tests) {
@@ -533,6 +552,10 @@ void World::findAndCollidePairs() {
                 const char* ahead = reinterpret_cast<const char*>(&m_contactPool[tests[k + kAhead].slot]);
                 for (size_t line = 0; line < sizeof(Contact); line += 64)
                     __builtin_prefetch(ahead + line);
+            }
+            if (k + kShapeAhead < tests.size()) {
+                prefetchPolyhedron(m_shapes[tests[k + kShapeAhead].bodyA]);
+                prefetchPolyhedron(m_shapes[tests[k + kShapeAhead].bodyB]);
             }
             collidePair(tests[k].slot, tests[k].margin);
         }

@@ -373,6 +373,7 @@ private:
     // sleeper (their index in the pair list), and its counts.
     struct NarrowTest {
         uint32_t slot;
+        uint32_t bodyA, bodyB; // the pair's bodies, for fetching their shapes ahead
         Real margin;
     };
     struct NarrowList {

@@ -286,6 +286,8 @@ private:
     // per level of the solver's schedule on average (ramps.obj's pile: 37; the 5,050-cube pyramid: 25).
     static constexpr size_t kMinBodiesForTeam = 128;
     static constexpr size_t kMinLevelWidth = 16;
+    // A body's principal moments within this fraction of the largest are taken as equal (create()).
+    static constexpr Real kIsotropicSpread = 1e-5;
     int substepRefinement(Real massRatio) const;
     // Runs body(begin, end) over [0, count) shared out to the team; empty without a team. (The same type as
     // BroadPhase::ParallelFor.)

@@ -1,6 +1,7 @@
 // The world's step on small scenes: free flight, resting contact, stacking, effects and their counters,
 // sleeping, and determinism across runs and thread counts.
 #include "io/SceneImport.h"
+#include "scene/BodyProperties.h"
 #include "scene/SceneLibrary.h"
 #include "world/Baker.h"
 #include "world/World.h"
@@ -115,6 +116,48 @@ private slots:
         QVERIFY(glm::length(w.linearVelocity(1)) < 0.01);
         QCOMPARE(w.manifolds().size(), size_t(1));
         QCOMPARE(w.manifolds()[0].pointCount, 4);
+    }
+
+    // A hull whose principal moments agree to World::kIsotropicSpread (a cube written with six decimals) is
+    // simulated as isotropic, with the mean moment; a box 0.1 % longer one way keeps its three moments.
+    void nearlyEqualMomentsAreTakenAsEqual_data() {
+        QTest::addColumn<Vec3>("half");
+        QTest::addColumn<bool>("turned");
+        QTest::addColumn<bool>("isotropic");
+        QTest::newRow("cube") << Vec3(0.1) << false << true;
+        QTest::newRow("turned cube, six decimals") << Vec3(0.1) << true << true;
+        QTest::newRow("box 0.1 % longer") << Vec3(0.1001, 0.1, 0.1) << false << false;
+        QTest::newRow("turned box 0.1 % longer, six decimals") << Vec3(0.1001, 0.1, 0.1) << true << false;
+    }
+    void nearlyEqualMomentsAreTakenAsEqual() {
+        QFETCH(Vec3, half);
+        QFETCH(bool, turned);
+        QFETCH(bool, isotropic);
+        Scene s = floorScene();
+        BodyDef body;
+        body.name = "Cube";
+        body.shape.type = ShapeType::Hull;
+        const Mat3 turn = glm::mat3_cast(glm::angleAxis(0.7, glm::normalize(Vec3(1.0, 2.0, 3.0))));
+        for (int i = 0; i < 8; ++i) {
+            Vec3 c = Vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1) * half;
+            if (turned)
+                c = glm::round((turn * c + Vec3(1.5, 2.25, -2.0)) * 1e6) * 1e-6;
+            body.shape.points.push_back(c);
+        }
+        s.bodies.push_back(body);
+        const Result<BodyProperties> props = computeBodyProperties(s, s.bodies[1]);
+        QVERIFY(props.ok());
+        const Vec3 m = props->principalMoments;
+        World w = makeWorld(s);
+        const Vec3 simulated = w.state().info[1].principalMoments;
+        qInfo("moments spread by %.3g of the largest; simulated (%.9g, %.9g, %.9g)", (m.z - m.x) / m.z, simulated.x,
+              simulated.y, simulated.z);
+        QCOMPARE(simulated.x == simulated.y && simulated.y == simulated.z, isotropic);
+        const Real mean = (m.x + m.y + m.z) / 3.0;
+        for (int k = 0; k < 3; ++k)
+            QVERIFY(std::abs(simulated[k] - mean) <= (isotropic ? 1e-15 : 2e-3) * mean);
+        if (turned)
+            QVERIFY(m.z - m.x > 0.0); // the rounding made the moments differ
     }
 
     void stackOfTenStands() {

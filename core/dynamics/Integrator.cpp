@@ -112,6 +112,41 @@ void positionPhase(BodyState& state, uint32_t i, Real dt, const Vec3& gravity, c
     }
 }
 
+// Symplectic Euler's two phases for the world's substeps (the span overloads below): the numbers of velocityPhase()
+// and positionPhase() with that scheme, without the smooth motion, which only the other schemes' position phases
+// read. (Symplectic Euler's position phase moves by v dt, which is the stored displacement whenever v is the stored
+// velocity.) Over ramps.obj's first 120 frames on one thread, integrate_velocities went from 28.1-29.0 to 18.4-18.8 ms
+// and integrate_positions from 63.7-65.6 to 53.2-53.4 ms (three interleaved runs each, the same frames, 2026-11-29).
+void symplecticVelocityPhase(BodyState& state, uint32_t i, Real dt, const Vec3& gravity, const Damping& damping,
+                             bool rotationEnabled, ClampCounters& clampCounters) {
+    Vec3& v = state.linearVelocity[i];
+    v = (v + gravity * dt) * detail::implicitDecay(damping.linear + state.linearDamping[i], dt);
+    Vec3 angular(0.0);
+    if (rotationEnabled) {
+        Vec3& w = state.angularVelocity[i];
+        const Real c = damping.angular + state.angularDamping[i];
+        const Vec3 inertia = inertiaOf(state, i);
+        if (isotropic(inertia)) {
+            w *= detail::implicitDecay(c, dt);
+        } else {
+            const Quat q = state.orientation[i];
+            w = q * (gyroscopicMidpoint(glm::conjugate(q) * w, inertia, dt) * detail::implicitDecay(c, dt));
+        }
+        angular = w;
+    }
+    clampSpeeds(v, angular, dt, state.limits, clampCounters);
+    if (rotationEnabled)
+        state.angularVelocity[i] = angular;
+}
+
+void symplecticPositionPhase(BodyState& state, uint32_t i, Real dt, bool rotationEnabled) {
+    state.position[i] = state.position[i] + state.linearVelocity[i] * dt;
+    if (rotationEnabled) {
+        Quat& q = state.orientation[i];
+        q = glm::normalize(rotationFromVector(state.angularVelocity[i] * dt) * q);
+    }
+}
+
 } // namespace
 
 void integrateVelocities(BodyState& state, BodyRange range, Real dt, const Vec3& gravity, const Damping& damping,
@@ -129,6 +164,12 @@ void integrateVelocities(BodyState& state, std::span<const uint32_t> bodies, Rea
                          ClampCounters& clampCounters) {
     if (!(dt > 0.0) || !std::isfinite(dt))
         return;
+    if (integrator == Integrator::SymplecticEuler) {
+        for (uint32_t i : bodies)
+            if (i < state.size() && state.isMoving(i))
+                symplecticVelocityPhase(state, i, dt, gravity, damping, rotationEnabled, clampCounters);
+        return;
+    }
     for (uint32_t i : bodies)
         if (i < state.size() && state.isMoving(i))
             velocityPhase(state, i, dt, gravity, damping, integrator, rotationEnabled, clampCounters);
@@ -148,6 +189,12 @@ void integratePositions(BodyState& state, std::span<const uint32_t> bodies, Real
                         const Damping& damping, Integrator integrator, bool rotationEnabled) {
     if (!(dt > 0.0) || !std::isfinite(dt))
         return;
+    if (integrator == Integrator::SymplecticEuler) {
+        for (uint32_t i : bodies)
+            if (i < state.size() && state.isMoving(i))
+                symplecticPositionPhase(state, i, dt, rotationEnabled);
+        return;
+    }
     for (uint32_t i : bodies)
         if (i < state.size() && state.isMoving(i))
             positionPhase(state, i, dt, gravity, damping, integrator, rotationEnabled);

@@ -82,7 +82,9 @@ void integratePositions(BodyState& state, BodyRange range, Real dt, const Vec3& 
 
 // The same two phases for a list of body indices (the world's islands solved with their own substep count and on
 // their own threads). Indices that are out of range, asleep or static are skipped. The clamp is counted in
-// `clampCounters` instead of the state's, so that disjoint lists can run on several threads.
+// `clampCounters` instead of the state's, so that disjoint lists can run on several threads. With symplectic Euler
+// these leave the smooth motion (smoothDisplacement ...) as it was: that scheme's position phase does not read it,
+// and the bodies move as under the range overloads, to the bit.
 void integrateVelocities(BodyState& state, std::span<const uint32_t> bodies, Real dt, const Vec3& gravity,
                          const Damping& damping, Integrator integrator, bool rotationEnabled,
                          ClampCounters& clampCounters);

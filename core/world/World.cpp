@@ -1427,7 +1427,10 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
                 if (rotation)
                     bodies[k + 1].invInertia = local.worldInverseInertia(k);
             }
-            toSolver(mine);
+            // Symplectic Euler's position phase leaves the velocities as the solver left them; the other schemes
+            // change them (Verlet's closing half kick, explicit Euler's turn of w).
+            if (m_integrator != Integrator::SymplecticEuler)
+                toSolver(mine);
             barrier();
             timer(Stage::Relax);
             for (int it = 0; it < m_tuning.relaxIterations; ++it) {

@@ -19,6 +19,28 @@ bool isotropic(const Vec3& inertia) {
     return std::abs(inertia.y - inertia.x) <= tolerance && std::abs(inertia.z - inertia.x) <= tolerance;
 }
 
+// Symplectic Euler's angular velocity over dt with damping rate c: the implicit midpoint gyroscopic step.
+void symplecticAngularVelocity(BodyState& state, uint32_t i, Real dt, Real c) {
+    const Vec3 inertia = inertiaOf(state, i);
+    Vec3& w = state.angularVelocity[i];
+    if (isotropic(inertia)) {
+        // w x (I w) vanishes when the three moments are equal (a cube, a sphere): no gyroscopic term, and no need to
+        // go to the body frame and back. Cubes are most of every stacking scene.
+        w *= detail::implicitDecay(c, dt);
+    } else {
+        const Quat q = state.orientation[i];
+        w = q * (gyroscopicMidpoint(glm::conjugate(q) * w, inertia, dt) * detail::implicitDecay(c, dt));
+    }
+}
+
+// BodyState::limits on one body's velocities; without rotation its angular velocity is neither read nor written.
+void clampBody(BodyState& state, uint32_t i, Real dt, bool rotationEnabled, ClampCounters& clampCounters) {
+    Vec3 angular = rotationEnabled ? state.angularVelocity[i] : Vec3(0.0);
+    clampSpeeds(state.linearVelocity[i], angular, dt, state.limits, clampCounters);
+    if (rotationEnabled)
+        state.angularVelocity[i] = angular;
+}
+
 void angularVelocityPhase(BodyState& state, uint32_t i, Real dt, Real c, Integrator integrator) {
     const Quat q = state.orientation[i];
     const Vec3 inertia = inertiaOf(state, i);
@@ -33,14 +55,7 @@ void angularVelocityPhase(BodyState& state, uint32_t i, Real dt, Real c, Integra
         w = q * wb;
         break;
     case Integrator::SymplecticEuler:
-        if (isotropic(inertia)) {
-            // w x (I w) vanishes when the three moments are equal (a cube, a sphere): no gyroscopic term, and no
-            // need to go to the body frame and back. Cubes are most of every stacking scene.
-            w *= detail::implicitDecay(c, dt);
-        } else {
-            wb = gyroscopicMidpoint(bodyFrame(), inertia, dt) * detail::implicitDecay(c, dt);
-            w = q * wb;
-        }
+        symplecticAngularVelocity(state, i, dt, c);
         break; // the rotation over the substep is rotationFromVector(w dt), taken in positionPhase()
     case Integrator::Verlet:
         wb = gyroscopicExplicit(bodyFrame(), inertia, 0.5 * dt) * detail::explicitDecay(c, 0.5 * dt);
@@ -75,10 +90,7 @@ void velocityPhase(BodyState& state, uint32_t i, Real dt, const Vec3& gravity, c
         angularVelocityPhase(state, i, dt, damping.angular + state.angularDamping[i], integrator);
     // The clamp runs after the smooth update so that gravity cannot push a body past it; whatever it removes the
     // position phase treats like a solver change.
-    Vec3 angular = rotationEnabled ? state.angularVelocity[i] : Vec3(0.0);
-    clampSpeeds(state.linearVelocity[i], angular, dt, state.limits, clampCounters);
-    if (rotationEnabled)
-        state.angularVelocity[i] = angular;
+    clampBody(state, i, dt, rotationEnabled, clampCounters);
 }
 
 void positionPhase(BodyState& state, uint32_t i, Real dt, const Vec3& gravity, const Damping& damping,
@@ -121,22 +133,9 @@ void symplecticVelocityPhase(BodyState& state, uint32_t i, Real dt, const Vec3& 
                              bool rotationEnabled, ClampCounters& clampCounters) {
     Vec3& v = state.linearVelocity[i];
     v = (v + gravity * dt) * detail::implicitDecay(damping.linear + state.linearDamping[i], dt);
-    Vec3 angular(0.0);
-    if (rotationEnabled) {
-        Vec3& w = state.angularVelocity[i];
-        const Real c = damping.angular + state.angularDamping[i];
-        const Vec3 inertia = inertiaOf(state, i);
-        if (isotropic(inertia)) {
-            w *= detail::implicitDecay(c, dt);
-        } else {
-            const Quat q = state.orientation[i];
-            w = q * (gyroscopicMidpoint(glm::conjugate(q) * w, inertia, dt) * detail::implicitDecay(c, dt));
-        }
-        angular = w;
-    }
-    clampSpeeds(v, angular, dt, state.limits, clampCounters);
     if (rotationEnabled)
-        state.angularVelocity[i] = angular;
+        symplecticAngularVelocity(state, i, dt, damping.angular + state.angularDamping[i]);
+    clampBody(state, i, dt, rotationEnabled, clampCounters);
 }
 
 void symplecticPositionPhase(BodyState& state, uint32_t i, Real dt, bool rotationEnabled) {

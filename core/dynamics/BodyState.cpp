@@ -189,13 +189,18 @@ Result<BodyInit> bodyInitFromHull(const ConvexHull& hull, Real density, const Ve
     return init;
 }
 
+bool BodyState::hasIsotropicInverseInertia(uint32_t i) const {
+    const Vec3 d = invInertia[i];
+    return std::abs(d.y - d.x) <= 1e-12 * d.x && std::abs(d.z - d.x) <= 1e-12 * d.x;
+}
+
 Mat3 BodyState::worldInverseInertia(uint32_t i) const {
     const Vec3 d = invInertia[i];
     // Three moments equal to 1e-12 (a cube, a sphere; the integrator treats such a body as isotropic too): R D R^T is
     // then d times the identity, to within that spread, in any pose. Cubes are most of the bodies of a stacking
     // scene, and the solver takes this for every body on every substep: the matrix products took 34 ns a body, a
     // quarter of ramps.obj's integrate_positions (2026-11-28, Intel Xeon at 2.5 GHz).
-    if (std::abs(d.y - d.x) <= 1e-12 * d.x && std::abs(d.z - d.x) <= 1e-12 * d.x)
+    if (hasIsotropicInverseInertia(i))
         return Mat3(d.x);
     // R D R^T, each of its six distinct entries once, so that it is symmetric to the bit: sum over k of
     // R_ik d_k R_jk, with R_ik = r[k][i] (glm's matrices are column by column).

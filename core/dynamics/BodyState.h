@@ -119,6 +119,9 @@ struct BodyState {
     bool isMoving(uint32_t i) const { return (flags[i] & (kBodyStatic | kBodyAwake)) == kBodyAwake; }
 
     Mat3 worldInverseInertia(uint32_t i) const;
+    // The three inverse moments agree to 1e-12 relative: worldInverseInertia() is then the first times the identity
+    // in every pose.
+    bool hasIsotropicInverseInertia(uint32_t i) const;
     Mat3 worldInertia(uint32_t i) const;
     Real kineticEnergy(uint32_t i) const;                           // translational + rotational, J
     Real rotationalEnergy(uint32_t i) const;                        // J

@@ -447,9 +447,69 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
     // the vectors too (restitution on), ramps' took 0.164-0.169 ms against 0.190 (one thread, 300 frames, likewise).
     // The frames are the same.
     const bool wideSetUp = s_wideSetUp;
+    // The scalar set-up of batch b (where setUpBatch() is not used), constraint by constraint. Lanes past at.lanes stay
+    // empty: no constraint, bodies 0, zero masses and impulses.
+    const auto fill = [&](size_t b) {
+        const BatchLayout& at = layout[b];
+        Batch<W>& batch = batches[b];
+        std::memset(static_cast<void*>(&batch), 0, sizeof(Batch<W>));
+        BatchScales<W>& scales = store.scales[b];
+        std::memset(static_cast<void*>(&scales), 0, sizeof(BatchScales<W>));
+        batch.firstPoint = at.firstPoint;
+        batch.pointCount = at.pointCount;
+        for (uint32_t k = 0; k < at.pointCount; ++k)
+            std::memset(static_cast<void*>(&points[at.firstPoint + k]), 0, sizeof(BatchPoint<W>));
+        if (maxImpulse && at.pointCount > 0)
+            std::memset(static_cast<void*>(&store.maxImpulse[at.firstPoint]), 0, at.pointCount * sizeof(Lanes<W>));
+        for (uint32_t l = 0; l < at.lanes; ++l) {
+            const int lane = static_cast<int>(l);
+            const uint32_t index = m_solveOrder[at.first + l];
+            ContactConstraint c;
+            setUpConstraint(c, *inputs.manifolds[index], inputs.indexA[index], inputs.indexB[index],
+                            inputs.friction[index], inputs.restitution[index],
+                            inputs.held.empty() ? Hold{} : inputs.held[index], inputs.bodies, inputs.centers, m_h,
+                            m_settings);
+            if (m_kept) {
+                m_constraints[index] = c;
+            } else if (m_bounceOnly && mayBounce(c)) {
+                m_constraints[index] = c;
+                m_bouncing[index] = 1;
+            }
+            std::copy(c.order, c.order + 4, m_order[index].begin());
+            batch.bodyA[l] = c.bodyA;
+            batch.bodyB[l] = c.bodyB;
+            m_laneOf[index] = static_cast<uint32_t>(b * W + l);
+            set(batch.normal, c.normal, lane);
+            set(batch.tangent[0], c.tangent[0], lane);
+            set(batch.tangent[1], c.tangent[1], lane);
+            batch.friction.v[l] = c.friction;
+            scales.a.v[l] = c.scaleA;
+            scales.b.v[l] = c.scaleB;
+            batch.holds = batch.holds || c.scaleA != 1.0 || c.scaleB != 1.0;
+            set(batch.anchorOffset, c.anchorOffset, lane);
+            set(batch.centerA, c.centerA, lane);
+            set(batch.centerB, c.centerB, lane);
+            for (int m = 0; m < 3; ++m)
+                batch.frictionMass[m].v[l] = static_cast<float>(c.frictionMass[m]);
+            batch.twistMass.v[l] = static_cast<float>(c.twistMass);
+            batch.frictionImpulse[0].v[l] = c.frictionImpulse[0];
+            batch.frictionImpulse[1].v[l] = c.frictionImpulse[1];
+            batch.twistImpulse.v[l] = c.twistImpulse;
+            for (int k = 0; k < c.pointCount; ++k) {
+                const ContactConstraint::Point& p = c.points[c.order[k]];
+                BatchPoint<W>& q = points[at.firstPoint + static_cast<uint32_t>(k)];
+                set(q.rA, p.rA, lane);
+                q.baseSeparation.v[l] = static_cast<float>(p.baseSeparation);
+                q.mass.v[l] = static_cast<float>(p.normalMass);
+                q.leverArm.v[l] = static_cast<float>(p.leverArm);
+                q.impulse.v[l] = p.normalImpulse;
+                if (maxImpulse)
+                    store.maxImpulse[at.firstPoint + static_cast<uint32_t>(k)].v[l] = p.maxNormalImpulse;
+            }
+        }
+    };
     shareOut(parallelFor, layout.size(), [&](size_t begin, size_t end) {
         for (size_t b = begin; b < end; ++b) {
-            const BatchLayout& at = layout[b];
             // The next batch's manifolds and bodies are read in level order, scattered in memory: fetch them ahead.
             if (b + 1 < end) {
                 const BatchLayout& next = layout[b + 1];
@@ -465,69 +525,18 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
                     }
                 }
             }
-            if (wideSetUp && (W == 8 ? setUpBatch8(inputs, b) : setUpBatch4(inputs, b)))
-                continue;
-            // Lanes past at.lanes stay empty: no constraint, bodies 0, zero masses and impulses.
+            if (!wideSetUp || !(W == 8 ? setUpBatch8(inputs, b) : setUpBatch4(inputs, b)))
+                fill(b);
+            // Whether every body of the batch is isotropic (SolverBody::isotropic), so that its sweeps multiply by one
+            // number for the inverse inertia. Empty lanes read entry 0, so it counts too.
             Batch<W>& batch = batches[b];
-            std::memset(static_cast<void*>(&batch), 0, sizeof(Batch<W>));
-            BatchScales<W>& scales = store.scales[b];
-            std::memset(static_cast<void*>(&scales), 0, sizeof(BatchScales<W>));
-            batch.firstPoint = at.firstPoint;
-            batch.pointCount = at.pointCount;
-            for (uint32_t k = 0; k < at.pointCount; ++k)
-                std::memset(static_cast<void*>(&points[at.firstPoint + k]), 0, sizeof(BatchPoint<W>));
-            if (maxImpulse && at.pointCount > 0)
-                std::memset(static_cast<void*>(&store.maxImpulse[at.firstPoint]), 0, at.pointCount * sizeof(Lanes<W>));
-            for (uint32_t l = 0; l < at.lanes; ++l) {
-                const int lane = static_cast<int>(l);
-                const uint32_t index = m_solveOrder[at.first + l];
-                ContactConstraint c;
-                setUpConstraint(c, *inputs.manifolds[index], inputs.indexA[index], inputs.indexB[index],
-                                inputs.friction[index], inputs.restitution[index],
-                                inputs.held.empty() ? Hold{} : inputs.held[index], inputs.bodies, inputs.centers, m_h,
-                                m_settings);
-                if (m_kept) {
-                    m_constraints[index] = c;
-                } else if (m_bounceOnly && mayBounce(c)) {
-                    m_constraints[index] = c;
-                    m_bouncing[index] = 1;
-                }
-                std::copy(c.order, c.order + 4, m_order[index].begin());
-                batch.bodyA[l] = c.bodyA;
-                batch.bodyB[l] = c.bodyB;
-                m_laneOf[index] = static_cast<uint32_t>(b * W + l);
-                set(batch.normal, c.normal, lane);
-                set(batch.tangent[0], c.tangent[0], lane);
-                set(batch.tangent[1], c.tangent[1], lane);
-                batch.friction.v[l] = c.friction;
-                scales.a.v[l] = c.scaleA;
-                scales.b.v[l] = c.scaleB;
-                batch.holds = batch.holds || c.scaleA != 1.0 || c.scaleB != 1.0;
-                set(batch.anchorOffset, c.anchorOffset, lane);
-                set(batch.centerA, c.centerA, lane);
-                set(batch.centerB, c.centerB, lane);
-                for (int m = 0; m < 3; ++m)
-                    batch.frictionMass[m].v[l] = static_cast<float>(c.frictionMass[m]);
-                batch.twistMass.v[l] = static_cast<float>(c.twistMass);
-                batch.frictionImpulse[0].v[l] = c.frictionImpulse[0];
-                batch.frictionImpulse[1].v[l] = c.frictionImpulse[1];
-                batch.twistImpulse.v[l] = c.twistImpulse;
-                for (int k = 0; k < c.pointCount; ++k) {
-                    const ContactConstraint::Point& p = c.points[c.order[k]];
-                    BatchPoint<W>& q = points[at.firstPoint + static_cast<uint32_t>(k)];
-                    set(q.rA, p.rA, lane);
-                    q.baseSeparation.v[l] = static_cast<float>(p.baseSeparation);
-                    q.mass.v[l] = static_cast<float>(p.normalMass);
-                    q.leverArm.v[l] = static_cast<float>(p.leverArm);
-                    q.impulse.v[l] = p.normalImpulse;
-                    if (maxImpulse)
-                        store.maxImpulse[at.firstPoint + static_cast<uint32_t>(k)].v[l] = p.maxNormalImpulse;
-                }
-            }
+            batch.isotropic = true;
+            for (int l = 0; l < W; ++l)
+                batch.isotropic = batch.isotropic && inputs.bodies[batch.bodyA[l]].isotropic &&
+                                  inputs.bodies[batch.bodyB[l]].isotropic;
         }
     });
 }
-
 bool ContactSolver::mayBounce(const ContactConstraint& c) const {
     if (c.restitution == 0.0)
         return false;
@@ -859,6 +868,14 @@ void ContactSolver::storeFromBatches(const BatchStore<W>& store, std::span<Manif
             m.twistImpulse = batch.twistImpulse.v[lane];
         }
     });
+}
+
+size_t ContactSolver::isotropicBatchCount() const {
+    const auto count = [](const auto& batches) {
+        return static_cast<size_t>(
+            std::count_if(batches.begin(), batches.end(), [](const auto& batch) { return batch.isotropic; }));
+    };
+    return m_width == 8 ? count(m_store8.batches) : count(m_store4.batches);
 }
 
 } // namespace rl

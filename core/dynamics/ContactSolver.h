@@ -32,9 +32,13 @@ struct alignas(256) SolverBody {
     Mat3 dR{1.0};         // rotation change since the step began (a matrix: 9 multiplies per anchor)
     Real invMass = 0.0;   // 0 for anchors and kinematic proxies
     Mat3 invInertia{0.0}; // world axes, taken at the start of the step
+    // Set by the caller when invInertia is, and stays through the step, a number times the identity (+0 off the
+    // diagonal): a cube's, a sphere's, the zeros of an anchor. The batched sweeps then multiply by that number alone
+    // where every body of a batch has it, with the same results (ContactSolverWide.cpp, isotropicTimes()).
+    bool isotropic = false;
     // 32 doubles in all, so that the batches' gathers read each record as four whole blocks of eight doubles
     // (ContactSolverWide.cpp) without reading past the last one.
-    Real unused[4] = {0.0, 0.0, 0.0, 0.0};
+    Real unused[3] = {0.0, 0.0, 0.0};
 };
 static_assert(sizeof(SolverBody) == 256, "a solver body is four cache lines");
 
@@ -227,6 +231,8 @@ public:
     };
     // The lanes of the batches: 8 where the CPU runs x86-64-v4 (AVX-512), else 4 (chosen by buildBatches()).
     int laneWidth() const { return m_width; }
+    // Batches whose bodies are all SolverBody::isotropic (the sweeps' shorter inverse inertia products).
+    size_t isotropicBatchCount() const;
     // 4 keeps every solver's batches to four lanes; 8 (the default) lets them have eight where the CPU has AVX-512.
     // For tests, which compare the two widths; it applies to the next prepare().
     static void setWidestLanes(int lanes) { s_widestLanes = lanes; }
@@ -261,7 +267,8 @@ private:
     struct Batch {
         uint32_t bodyA[W] = {}, bodyB[W] = {};
         uint32_t firstPoint = 0, pointCount = 0;
-        bool holds = false; // a lane holds a side still: the sweeps scale that side's inverse mass and inertia
+        bool holds = false;     // a lane holds a side still: the sweeps scale that side's inverse mass and inertia
+        bool isotropic = false; // every lane's two bodies are SolverBody::isotropic
         FloatLanes<W> normal[3], tangent[2][3];
         FloatLanes<W> anchorOffset[3]; // rB - rA of every point (ContactConstraint::anchorOffset)
         FloatLanes<W> friction;

@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
+#include <limits>
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 // Four lanes: one AVX2 register of doubles where the CPU has it, two SSE2 registers elsewhere. Eight lanes run only
@@ -250,9 +252,10 @@ template <class V>
 struct Side {
     L3<V> v, w;
     V invMass;
-    M3<V> invInertia;
+    M3<V> invInertia; // only m[0][0] is read (and set) where isotropic
     L3<V> dp;
     M3<V> dR;
+    bool isotropic = false; // every lane's body is SolverBody::isotropic: invInertia is m[0][0] times the identity
 };
 
 // The doubles of a SolverBody record: v 0-2, w 3-5, dp 6-8, dR 9-17, invMass 18, invInertia 19-27, unused 28-31.
@@ -266,7 +269,12 @@ RL_LANES_INLINE void unpack(Side<V>& s, const V* d, bool motion) { // d[k]: doub
     s.v = {d[0], d[1], d[2]};
     s.w = {d[3], d[4], d[5]};
     s.invMass = d[18];
-    s.invInertia = {{{d[19], d[20], d[21]}, {d[22], d[23], d[24]}, {d[25], d[26], d[27]}}};
+    if (s.isotropic) { // d[20] .. d[27] hold the zeros and copies of d[19], and may not have been read
+        s.invInertia = M3<V>{};
+        s.invInertia.m[0][0] = d[19];
+    } else {
+        s.invInertia = {{{d[19], d[20], d[21]}, {d[22], d[23], d[24]}, {d[25], d[26], d[27]}}};
+    }
     if (motion) {
         s.dp = {d[6], d[7], d[8]};
         s.dR = {{{d[9], d[10], d[11]}, {d[12], d[13], d[14]}, {d[15], d[16], d[17]}}};
@@ -337,14 +345,17 @@ RL_LANES_INLINE void gather(Side<typename Vec<W>::V>& s, std::span<const SolverB
             loadBlock<4>(record, 3, d + 12);
         }
         loadBlock<4>(record, 4, d + 16);
-        loadBlock<4>(record, 5, d + 20);
-        loadBlock<4>(record, 6, d + 24);
+        if (!s.isotropic) {
+            loadBlock<4>(record, 5, d + 20);
+            loadBlock<4>(record, 6, d + 24);
+        }
     } else {
         loadBlock<8>(record, 0, d);
         if constexpr (kMotion)
             loadBlock<8>(record, 1, d + 8);
         loadBlock<8>(record, 2, d + 16);
-        loadBlock<8>(record, 3, d + 24);
+        if (!s.isotropic)
+            loadBlock<8>(record, 3, d + 24);
     }
     unpack(s, d, kMotion);
 }
@@ -408,6 +419,10 @@ RL_LANES_INLINE void scatter(const Side<typename Vec<W>::V>& s, std::span<Solver
 template <class V>
 RL_LANES_INLINE void scaleSide(Side<V>& s, const V& scale) {
     s.invMass = s.invMass * scale;
+    if (s.isotropic) { // the zeros off the diagonal stay +0
+        s.invInertia.m[0][0] = s.invInertia.m[0][0] * scale;
+        return;
+    }
     for (int c = 0; c < 3; ++c)
         for (int r = 0; r < 3; ++r)
             s.invInertia.m[c][r] = s.invInertia.m[c][r] * scale;
@@ -417,12 +432,45 @@ RL_LANES_INLINE void scaleSide(Side<V>& s, const V& scale) {
 template <int W, bool kMotion, class BatchT, class ScalesT>
 RL_LANES_INLINE void gatherSides(const BatchT& batch, const ScalesT& scales, std::span<const SolverBody> bodies,
                                  Side<typename Vec<W>::V>& a, Side<typename Vec<W>::V>& b) {
+    a.isotropic = b.isotropic = batch.isotropic;
     gather<W, kMotion>(a, bodies, batch.bodyA);
     gather<W, kMotion>(b, bodies, batch.bodyB);
     if (batch.holds) {
         scaleSide(a, get<W>(scales.a));
         scaleSide(b, get<W>(scales.b));
     }
+}
+
+// d I x for the lanes' numbers d, bit for bit what the full product M x gives for M = d I with +0 off the diagonal
+// (glm's order, operator* above): row r sums d x_r and two +0 times the other components. A sum of zeros is -0
+// only where every term is -0, and a +0 times a component is -0 where the component's sign bit is set; so the row is
+// d x_r where that is not zero, else -0 where x, y and z all have their sign bits set, else +0, which is d x_r plus
+// that zero. (Only non-finite components, which the full product spreads to the other rows, would differ.)
+#if defined(__GNUC__) && !defined(__clang__)
+template <class V>
+RL_LANES_INLINE L3<V> isotropicTimes(const V& d, const L3<V>& x) {
+    using Mask = decltype(x.x < x.x);
+    // (A cast between vector types of one size keeps the bits.)
+    const Mask negative = (((Mask)x.x & (Mask)x.y) & (Mask)x.z) & std::numeric_limits<int64_t>::min();
+    const V zero = (V)negative;
+    return {d * x.x + zero, d * x.y + zero, d * x.z + zero};
+}
+#else
+template <class V>
+RL_LANES_INLINE L3<V> isotropicTimes(const V& d, const L3<V>& x) {
+    L3<V> r;
+    for (size_t l = 0; l < sizeof(V) / sizeof(Real); ++l) {
+        const Real zero = std::signbit(x.x[l]) && std::signbit(x.y[l]) && std::signbit(x.z[l]) ? -0.0 : 0.0;
+        r.x[l] = d[l] * x.x[l] + zero;
+        r.y[l] = d[l] * x.y[l] + zero;
+        r.z[l] = d[l] * x.z[l] + zero;
+    }
+    return r;
+}
+#endif
+template <class V>
+RL_LANES_INLINE L3<V> inverseInertiaTimes(const Side<V>& s, const L3<V>& x) {
+    return s.isotropic ? isotropicTimes(s.invInertia.m[0][0], x) : s.invInertia * x;
 }
 
 // One row of one point along direction d: r x d for each body, and that times the body's inverse inertia, computed
@@ -437,8 +485,8 @@ RL_LANES_INLINE Row<V> makeRow(const Side<V>& a, const Side<V>& b, const L3<V>& 
     row.d = d;
     row.angularA = cross(rA, d);
     row.angularB = cross(rB, d);
-    row.inertiaA = a.invInertia * row.angularA;
-    row.inertiaB = b.invInertia * row.angularB;
+    row.inertiaA = inverseInertiaTimes(a, row.angularA);
+    row.inertiaB = inverseInertiaTimes(b, row.angularB);
     return row;
 }
 
@@ -465,15 +513,15 @@ RL_LANES_INLINE void applyFriction(Side<V>& a, Side<V>& b, const L3<V> tangent[2
                                    const L3<V>& centerB, const V& j0, const V& j1) {
     const L3<V> P = j0 * tangent[0] + j1 * tangent[1];
     a.v = a.v - a.invMass * P;
-    a.w = a.w - a.invInertia * cross(centerA, P);
+    a.w = a.w - inverseInertiaTimes(a, cross(centerA, P));
     b.v = b.v + b.invMass * P;
-    b.w = b.w + b.invInertia * cross(centerB, P);
+    b.w = b.w + inverseInertiaTimes(b, cross(centerB, P));
 }
 template <class V>
 RL_LANES_INLINE void applyTwist(Side<V>& a, Side<V>& b, const L3<V>& normal, const V& jt) {
     const L3<V> T = jt * normal;
-    a.w = a.w - a.invInertia * T;
-    b.w = b.w + b.invInertia * T;
+    a.w = a.w - inverseInertiaTimes(a, T);
+    b.w = b.w + inverseInertiaTimes(b, T);
 }
 
 } // namespace

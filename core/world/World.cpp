@@ -1240,6 +1240,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
     std::vector<SolverBody>& bodies = scratch.solverBodies;
     bodies.resize(group.size() + 1);
     bodies[0] = SolverBody{};
+    bodies[0].isotropic = true; // zero inverse mass and inertia
     scratch.centers.resize(group.size() + 1);
     scratch.centers[0] = Vec3(0.0);
     BodyState& local = scratch.local;
@@ -1257,6 +1258,9 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
             b.invMass = m_state.invMass[i];
             // Linear-only mode: the solver must not spin bodies either.
             b.invInertia = rotation ? m_state.worldInverseInertia(i) : Mat3(0.0);
+            // The substeps below take the inverse inertia again at each pose: an isotropic one stays d times the
+            // identity.
+            b.isotropic = !rotation || m_state.hasIsotropicInverseInertia(i);
             // prepare() records each point's approach speed for restitution, so it must see the current velocities.
             b.v = local.linearVelocity[k];
             b.w = rotation ? local.angularVelocity[k] : Vec3(0.0);

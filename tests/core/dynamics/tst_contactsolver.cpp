@@ -639,6 +639,146 @@ private slots:
         QVERIFY(std::abs(light / heavy + 10.0) < 1e-6);
     }
 
+    // Bodies marked isotropic (SolverBody::isotropic: d times the identity) are swept with d alone where a batch has
+    // only such bodies; the velocities and impulses are those of the same bodies unmarked, which every batch sweeps
+    // with the full matrix, to the bit, and equal to the sequential sweep's. Half the contacts (a tower's all) are
+    // axis-aligned and frictionless, and some velocity components start as zeros of either sign.
+    void isotropicBodiesGiveTheFullProductsNumbers_data() { batchesGiveTheSequentialNumbers_data(); }
+    void isotropicBodiesGiveTheFullProductsNumbers() {
+        Row row = fetchRow(9);
+        Problem& p = row.problem;
+        // In a tower every contact, elsewhere every other one, is axis-aligned and frictionless: its normal rows
+        // leave w.y at a zero of either sign.
+        for (size_t k = 0; k < p.manifolds.size(); k += row.chain ? 1 : 2) {
+            Manifold& m = p.manifolds[k];
+            m.normal = Vec3(0.0, k % 4 == 0 ? 1.0 : -1.0, 0.0);
+            m.frictionImpulse = Vec3(0.0);
+            m.twistImpulse = 0.0;
+            p.friction[k] = 0.0;
+            for (int i = 0; i < m.pointCount; ++i) // on the centres' own axes: r has zero components
+                m.points[i].position = Vec3(p.centers[m.bodyA].x, 0.5 * (p.centers[m.bodyA].y + p.centers[m.bodyB].y),
+                                            i % 2 == 0 ? p.centers[m.bodyA].z : -0.25);
+        }
+        p.bodies[0].isotropic = true; // zero inverse mass and inertia
+        size_t marked = 0;
+        for (size_t i = 1; i < p.bodies.size(); ++i) {
+            SolverBody& b = p.bodies[i];
+            if (i % 7 == 0)
+                continue; // a turned box's inverse inertia: the batches with it take the full products
+            b.invInertia = Mat3(6.0 * b.invMass);
+            b.w = Vec3(i % 3 == 0 ? -0.0 : b.w.x, i % 2 == 0 ? -0.0 : 0.0, i % 4 == 1 ? -0.0 : b.w.z);
+            if (i % 5 == 0)
+                b.v.x = -0.0;
+            b.isotropic = true;
+            ++marked;
+        }
+        Problem unmarked = p;
+        for (SolverBody& b : unmarked.bodies)
+            b.isotropic = false;
+        std::vector<SolverBody> result[3] = {p.bodies, unmarked.bodies, p.bodies};
+        std::vector<Manifold> stored[2] = {p.manifolds, p.manifolds};
+        size_t isotropicBatches[2] = {};
+        for (int run = 0; run < 2; ++run) {
+            ContactSolver solver;
+            prepare(solver, run == 0 ? p : unmarked, row.partSpan(), false);
+            isotropicBatches[run] = solver.isotropicBatchCount();
+            for (int substep = 0; substep < 3; ++substep) {
+                solver.warmStart(result[run]);
+                solver.solve(result[run], true);
+                solver.solve(result[run], true);
+                solver.solve(result[run], false);
+            }
+            std::vector<Manifold*> pointers;
+            for (Manifold& m : stored[run])
+                pointers.push_back(&m);
+            solver.storeImpulses(pointers);
+        }
+        ContactSolver sequential;
+        sequential.keepConstraints(true);
+        prepare(sequential, p, row.partSpan(), false);
+        for (int substep = 0; substep < 3; ++substep) {
+            sequential.warmStartSequential(result[2]);
+            sequential.solveSequential(result[2], true);
+            sequential.solveSequential(result[2], true);
+            sequential.solveSequential(result[2], false);
+        }
+        int signedZeros = 0;
+        for (size_t i = 0; i < p.bodies.size(); ++i) {
+            QVERIFY(sameBits(result[0][i].v, result[1][i].v) && sameBits(result[0][i].w, result[1][i].w));
+            // (The sequential sweep's rows beside the static entry drop its zero terms: equal, but not always
+            // with the same zero signs, as in batchesGiveTheSequentialNumbers().)
+            QVERIFY(result[0][i].v == result[2][i].v && result[0][i].w == result[2][i].w);
+            for (int c = 0; c < 3; ++c)
+                signedZeros += result[0][i].w[c] == 0.0 && std::signbit(result[0][i].w[c]) ? 1 : 0;
+        }
+        for (size_t k = 0; k < p.manifolds.size(); ++k) {
+            QVERIFY(sameBits(stored[0][k].frictionImpulse, stored[1][k].frictionImpulse));
+            QCOMPARE(std::bit_cast<uint64_t>(stored[0][k].twistImpulse),
+                     std::bit_cast<uint64_t>(stored[1][k].twistImpulse));
+            for (int i = 0; i < p.manifolds[k].pointCount; ++i)
+                QCOMPARE(std::bit_cast<uint64_t>(stored[0][k].points[i].normalImpulse),
+                         std::bit_cast<uint64_t>(stored[1][k].points[i].normalImpulse));
+        }
+        qInfo("%zu of %zu bodies marked; %zu isotropic batches; %d angular velocity components -0 after the sweeps",
+              marked, p.bodies.size() - 1, isotropicBatches[0], signedZeros);
+        ContactSolver::setWidestLanes(8);
+        QCOMPARE(isotropicBatches[1], size_t(0));
+        QVERIFY(isotropicBatches[0] > 0);
+    }
+
+    // Where d x_r is a zero, the full product's row is +0 unless x, y and z all have their sign bits set: a box on the
+    // ground (n = +y, no friction rows) with every point at x > 0, z < 0 from its centre has r x n = (0.5, -0, ...) at
+    // each, whose y row is +0, so its w.y, -0 at the start, ends +0; d x_y alone would keep it -0.
+    void anIsotropicBodyKeepsTheFullProductsZeroSigns_data() {
+        QTest::addColumn<int>("lanes");
+        QTest::newRow("4 lanes") << 4;
+        QTest::newRow("8 lanes") << 8;
+    }
+    void anIsotropicBodyKeepsTheFullProductsZeroSigns() {
+        QFETCH(int, lanes);
+        ContactSolver::setWidestLanes(lanes);
+        Problem p;
+        p.bodies.assign(2, SolverBody{});
+        p.centers = {Vec3(0.0), Vec3(0.0, 0.5, 0.0)};
+        p.bodies[1].invMass = 1.0;
+        p.bodies[1].invInertia = Mat3(6.0);
+        p.bodies[1].v = Vec3(0.0, -1.0, 0.0);
+        p.bodies[1].w = Vec3(-0.0, -0.0, -0.0);
+        Manifold m;
+        m.bodyA = 0;
+        m.bodyB = 1;
+        m.normal = Vec3(0.0, 1.0, 0.0);
+        m.pointCount = 4;
+        for (int k = 0; k < 4; ++k)
+            m.points[k].position = Vec3(0.125 * (k + 1), 0.0, -0.125 * (k + 1));
+        p.manifolds = {m};
+        p.indexA = {0};
+        p.indexB = {1};
+        p.friction = {0.0};
+        p.restitution = {0.0};
+        std::vector<SolverBody> result[2];
+        for (int marked = 0; marked < 2; ++marked) {
+            Problem q = p;
+            q.bodies[0].isotropic = q.bodies[1].isotropic = marked == 1;
+            ContactSolverSettings settings;
+            settings.restitution = false;
+            settings.friction = false; // the friction rows would add zeros of their own to w.y
+            std::vector<Manifold*> manifolds = {&q.manifolds[0]};
+            ContactSolver solver;
+            solver.prepare(manifolds, q.indexA, q.indexB, q.friction, q.restitution, q.bodies, q.centers, 1.0 / 480.0,
+                           settings);
+            QCOMPARE(solver.isotropicBatchCount(), size_t(marked));
+            result[marked] = q.bodies;
+            // (No warm start: its twist and friction rows, applied even at zero impulse, would add +0 to w.y.)
+            solver.solve(result[marked], true);
+            solver.solve(result[marked], false);
+        }
+        ContactSolver::setWidestLanes(8);
+        QVERIFY(result[1][1].v.y > -1.0); // the contact pushed
+        QVERIFY(result[1][1].w.y == 0.0 && !std::signbit(result[1][1].w.y));
+        QVERIFY(sameBits(result[0][1].v, result[1][1].v) && sameBits(result[0][1].w, result[1][1].w));
+    }
+
     void aTeamOfTwoSolvesBitIdentically_data() {
         QTest::addColumn<bool>("parts");
         QTest::addColumn<int>("lanes");

@@ -92,6 +92,13 @@ void integrateVelocities(BodyState& state, std::span<const uint32_t> bodies, Rea
 void integratePositions(BodyState& state, std::span<const uint32_t> bodies, Real dt, const Vec3& gravity,
                         const Damping& damping, Integrator integrator, bool rotationEnabled);
 
+// Symplectic Euler's velocity phase of the world's substeps for the listed bodies (the list overload of
+// integrateVelocities()), then each body's velocities to the contact solver: solver[k + 1].v, and .w (zero without
+// rotation). The same bits as those two steps; lanes as below.
+void symplecticVelocitiesForSolver(BodyState& state, std::span<const uint32_t> bodies, Real dt, const Vec3& gravity,
+                                   const Damping& damping, bool rotationEnabled, ClampCounters& clampCounters,
+                                   std::span<SolverBody> solver, int lanes = 0);
+
 // Symplectic Euler's position phase of the world's substeps for the listed bodies, with what the contact solver keeps
 // of each (solver[k + 1] for body k): first the velocities the solver left are taken (v, and w with rotation), then
 // the position phase runs (integratePositions() with Integrator::SymplecticEuler; bodies that are not moving keep

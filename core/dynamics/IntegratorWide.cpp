@@ -1,10 +1,10 @@
-// symplecticPositionsForSolver(): symplectic Euler's position phase of the world's substeps and the solver's view of
-// each body after it, several bodies at a time in the lanes of one vector. Every lane does what the scalar code does
-// (symplecticPositionPhase() in Integrator.cpp, then the motion since the step began), operation for operation in
-// glm's order, so the numbers are the same to the bit: this file is compiled without contracting a * b + c into fused
-// multiply-adds (core/CMakeLists.txt). A lane whose rotation over the substep is too large for the series of
-// rotationFromVector() takes that function's sine and cosine, and a body whose inverse inertia is not isotropic takes
-// BodyState::worldInverseInertia(), both one lane at a time.
+// symplecticVelocitiesForSolver() and symplecticPositionsForSolver(): symplectic Euler's two phases in the world's
+// substeps, with the solver's copies of what they change, several bodies at a time in the lanes of one vector. Every
+// lane does what the scalar code does (symplecticPositionPhase() in Integrator.cpp, then the motion since the step
+// began), operation for operation in glm's order, so the numbers are the same to the bit: this file is compiled without
+// contracting a * b + c into fused multiply-adds (core/CMakeLists.txt). A lane whose rotation over the substep is too
+// large for the series of rotationFromVector() takes that function's sine and cosine, and a body whose inverse inertia
+// is not isotropic takes BodyState::worldInverseInertia(), both one lane at a time.
 #include "dynamics/Gyroscopic.h"
 #include "dynamics/Integrator.h"
 
@@ -31,6 +31,23 @@ void positionsForSolverOne(BodyState& state, uint32_t k, Real dt, bool rotationE
     solver.dR = glm::mat3_cast(glm::normalize(state.orientation[k] * glm::conjugate(startOrientation)));
     if (rotationEnabled)
         solver.invInertia = state.worldInverseInertia(k);
+}
+
+// The velocity phase of one body (the list overload of integrateVelocities()), then its velocities to the solver.
+void velocitiesForSolverOne(BodyState& state, uint32_t k, Real dt, const Vec3& gravity, const Damping& damping,
+                            bool rotationEnabled, ClampCounters& clampCounters, SolverBody& solver) {
+    integrateVelocities(state, std::span<const uint32_t>(&k, 1), dt, gravity, damping, Integrator::SymplecticEuler,
+                        rotationEnabled, clampCounters);
+    solver.v = state.linearVelocity[k];
+    solver.w = rotationEnabled ? state.angularVelocity[k] : Vec3(0.0);
+}
+
+// Whether symplectic Euler turns w of body k without the gyroscopic term (Integrator.cpp's isotropic(): the
+// principal moments equal to 1e-12).
+bool isotropicMoments(const BodyState& state, uint32_t k) {
+    const Vec3 inertia = state.info[k].principalMoments;
+    const Real tolerance = 1e-12 * inertia.x;
+    return std::abs(inertia.y - inertia.x) <= tolerance && std::abs(inertia.z - inertia.x) <= tolerance;
 }
 
 #if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
@@ -158,6 +175,77 @@ RL_LANES_INLINE void positionsForSolverLanes(BodyState& state, const uint32_t* i
     }
 }
 
+// symplecticVelocityPhase() (Integrator.cpp) in every lane whose body moves and turns without the gyroscopic term:
+// v = (v + g dt) / (1 + c dt) and w = w / (1 + c_w dt), then the speed clamp where a lane may need it (one lane at a
+// time, with clampSpeeds() itself). A moving body with the gyroscopic term takes the scalar phase. Then every listed
+// body's velocities go to the solver.
+template <int W>
+RL_LANES_INLINE void velocitiesForSolverLanes(BodyState& state, const uint32_t* ids, Real dt, const Vec3& gravity,
+                                              const Damping& damping, bool rotationEnabled,
+                                              ClampCounters& clampCounters, std::span<SolverBody> solver) {
+    using V = typename Lanes<W>::V;
+    V vx, vy, vz, wx, wy, wz, linear, angular;
+    bool lane[W];
+    for (int l = 0; l < W; ++l) {
+        const uint32_t k = ids[l];
+        lane[l] = state.isMoving(k) && (!rotationEnabled || isotropicMoments(state, k));
+        const Vec3& v = state.linearVelocity[k];
+        vx[l] = v.x;
+        vy[l] = v.y;
+        vz[l] = v.z;
+        const Vec3& w = state.angularVelocity[k];
+        wx[l] = w.x;
+        wy[l] = w.y;
+        wz[l] = w.z;
+        linear[l] = damping.linear + state.linearDamping[k];
+        angular[l] = damping.angular + state.angularDamping[k];
+    }
+    const Vec3 kick = gravity * dt;
+    const V decay = 1.0 / (1.0 + linear * dt); // detail::implicitDecay()
+    vx = (vx + kick.x) * decay;
+    vy = (vy + kick.y) * decay;
+    vz = (vz + kick.z) * decay;
+    if (rotationEnabled) {
+        const V turnDecay = 1.0 / (1.0 + angular * dt);
+        wx = wx * turnDecay;
+        wy = wy * turnDecay;
+        wz = wz * turnDecay;
+    }
+    // glm::length()'s squares; the clamp compares the square roots, as clampSpeeds() does.
+    const V speed2 = (vx * vx + vy * vy) + vz * vz, spin2 = (wx * wx + wy * wy) + wz * wz;
+    const Real maxAngularSpeed = state.limits.maxRotationPerSubstep / dt;
+    for (int l = 0; l < W; ++l) {
+        const uint32_t k = ids[l];
+        SolverBody& s = solver[k + 1];
+        if (lane[l]) {
+            Vec3 v(vx[l], vy[l], vz[l]);
+            Vec3 w = rotationEnabled ? Vec3(wx[l], wy[l], wz[l]) : Vec3(0.0);
+            const Real speed = std::sqrt(speed2[l]), spin = rotationEnabled ? std::sqrt(spin2[l]) : 0.0;
+            if (!(speed <= state.limits.maxLinearSpeed) || !(spin <= maxAngularSpeed))
+                clampSpeeds(v, w, dt, state.limits, clampCounters);
+            state.linearVelocity[k] = v;
+            if (rotationEnabled)
+                state.angularVelocity[k] = w;
+            s.v = v;
+            s.w = w;
+        } else {
+            velocitiesForSolverOne(state, k, dt, gravity, damping, rotationEnabled, clampCounters, s);
+        }
+    }
+}
+
+__attribute__((target("arch=x86-64-v4"))) void velocitiesForSolver8(BodyState& state, const uint32_t* ids, Real dt,
+                                                                    const Vec3& gravity, const Damping& damping,
+                                                                    bool rotationEnabled, ClampCounters& clampCounters,
+                                                                    std::span<SolverBody> solver) {
+    velocitiesForSolverLanes<8>(state, ids, dt, gravity, damping, rotationEnabled, clampCounters, solver);
+}
+__attribute__((target_clones("arch=x86-64-v3", "default"))) void
+velocitiesForSolver4(BodyState& state, const uint32_t* ids, Real dt, const Vec3& gravity, const Damping& damping,
+                     bool rotationEnabled, ClampCounters& clampCounters, std::span<SolverBody> solver) {
+    velocitiesForSolverLanes<4>(state, ids, dt, gravity, damping, rotationEnabled, clampCounters, solver);
+}
+
 __attribute__((target("arch=x86-64-v4"))) void positionsForSolver8(BodyState& state, const uint32_t* ids, Real dt,
                                                                    bool rotationEnabled,
                                                                    std::span<const Vec3> startPosition,
@@ -174,6 +262,36 @@ positionsForSolver4(BodyState& state, const uint32_t* ids, Real dt, bool rotatio
 #endif
 
 } // namespace
+
+void symplecticVelocitiesForSolver(BodyState& state, std::span<const uint32_t> bodies, Real dt, const Vec3& gravity,
+                                   const Damping& damping, bool rotationEnabled, ClampCounters& clampCounters,
+                                   std::span<SolverBody> solver, int lanes) {
+    size_t n = 0;
+    if (!(dt > 0.0) || !std::isfinite(dt)) { // a step of no time (or a broken one) changes no velocity
+        for (const uint32_t k : bodies) {
+            solver[k + 1].v = state.linearVelocity[k];
+            solver[k + 1].w = rotationEnabled ? state.angularVelocity[k] : Vec3(0.0);
+        }
+        return;
+    }
+#ifdef RL_INTEGRATOR_LANES
+    static const bool wide = __builtin_cpu_supports("x86-64-v4");
+    const int width = lanes == 1 ? 1 : wide && lanes != 4 ? 8 : 4;
+    if (width == 8)
+        for (; n + 8 <= bodies.size(); n += 8)
+            velocitiesForSolver8(state, bodies.data() + n, dt, gravity, damping, rotationEnabled, clampCounters,
+                                 solver);
+    else if (width == 4)
+        for (; n + 4 <= bodies.size(); n += 4)
+            velocitiesForSolver4(state, bodies.data() + n, dt, gravity, damping, rotationEnabled, clampCounters,
+                                 solver);
+#else
+    (void)lanes;
+#endif
+    for (; n < bodies.size(); ++n)
+        velocitiesForSolverOne(state, bodies[n], dt, gravity, damping, rotationEnabled, clampCounters,
+                               solver[bodies[n] + 1]);
+}
 
 void symplecticPositionsForSolver(BodyState& state, std::span<const uint32_t> bodies, Real dt, bool rotationEnabled,
                                   std::span<const Vec3> startPosition, std::span<const Quat> startOrientation,

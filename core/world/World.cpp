@@ -1399,8 +1399,14 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
         };
         for (int s = 0; s < substeps; ++s) {
             timer(Stage::IntegrateVelocities);
-            integrateVelocities(local, mine, h, m_gravity, m_damping, m_integrator, rotation, scratch.clamps[m]);
-            toSolver(mine);
+            if (m_integrator == Integrator::SymplecticEuler) {
+                // The velocity phase and the copy to the solver in one pass, several bodies at a time.
+                symplecticVelocitiesForSolver(local, mine, h, m_gravity, m_damping, rotation, scratch.clamps[m],
+                                              bodies);
+            } else {
+                integrateVelocities(local, mine, h, m_gravity, m_damping, m_integrator, rotation, scratch.clamps[m]);
+                toSolver(mine);
+            }
             if (members == 1) {
                 timer(Stage::WarmStart);
                 solver.warmStart(bodies);

@@ -159,6 +159,10 @@ private slots:
     void listedSymplecticBodiesIntegrateAsRanges();
     void symplecticPositionsForSolverAreTheStepsNumbers_data();
     void symplecticPositionsForSolverAreTheStepsNumbers();
+    void symplecticVelocitiesForSolverAreTheStepsNumbers_data() {
+        symplecticPositionsForSolverAreTheStepsNumbers_data();
+    }
+    void symplecticVelocitiesForSolverAreTheStepsNumbers();
 };
 
 std::vector<Vec3> boxCorners(const Vec3& halfExtents, const Vec3& center) {
@@ -715,6 +719,57 @@ void TestRotation::symplecticPositionsForSolverAreTheStepsNumbers() {
     QVERIFY(fused.position[0] != state.position[0]);
     QVERIFY(rotation == (fused.orientation[0] != state.orientation[0]));
     QVERIFY(turnedFar > 0);
+}
+
+void TestRotation::symplecticVelocitiesForSolverAreTheStepsNumbers() {
+    // Likewise the velocity phase with the copy to the solver (IntegratorWide.cpp) against integrateVelocities() and
+    // the copy one after the other: T-handles (the gyroscopic term, one lane at a time), damped cubes (in the lanes),
+    // a sleeper, bodies past the speed and the rotation limits (clamped, and counted alike).
+    QFETCH(int, lanes);
+    QFETCH(bool, rotation);
+    const RigidData handle = tHandle();
+    BodyState state;
+    for (int b = 0; b < 21; ++b) {
+        BodyInit init = movingHandle(handle, b);
+        if (b % 3 != 0) {
+            init.mass = 2.0;
+            init.inertia = Mat3(0.1);
+        }
+        if (b == 5 || b == 16)
+            init.linearVelocity = Vec3(0.0, -1500.0 - b, 300.0);
+        if (b == 10 || b == 14)
+            init.angularVelocity = Vec3(400.0 + b, -50.0, 10.0); // past pi / 4 a substep (283 rad/s)
+        QVERIFY(state.addBody(init).ok());
+    }
+    state.flags[7] &= static_cast<uint8_t>(~kBodyAwake);
+    std::vector<uint32_t> order(21);
+    for (uint32_t k = 0; k < 21; ++k)
+        order[k] = (k * 8) % 21;
+    const Real dt = 1.0 / 360.0;
+    const Vec3 gravity(0.0, -9.81, 0.0);
+    const Damping damping{0.02, 0.03};
+    BodyState stepped = state, fused = state;
+    std::vector<SolverBody> expected(22), got(22);
+    ClampCounters steppedClamps, fusedClamps;
+    integrateVelocities(stepped, order, dt, gravity, damping, Integrator::SymplecticEuler, rotation, steppedClamps);
+    for (const uint32_t k : order) {
+        expected[k + 1].v = stepped.linearVelocity[k];
+        expected[k + 1].w = rotation ? stepped.angularVelocity[k] : Vec3(0.0);
+    }
+    symplecticVelocitiesForSolver(fused, order, dt, gravity, damping, rotation, fusedClamps, got, lanes);
+    const auto same = [](const auto& a, const auto& b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    for (uint32_t k = 0; k < 21; ++k) {
+        QVERIFY2(same(fused.linearVelocity[k], stepped.linearVelocity[k]), qPrintable(QString("body %1").arg(k)));
+        QVERIFY2(same(fused.angularVelocity[k], stepped.angularVelocity[k]), qPrintable(QString("body %1").arg(k)));
+        QVERIFY(same(got[k + 1].v, expected[k + 1].v));
+        QVERIFY(same(got[k + 1].w, expected[k + 1].w));
+    }
+    QCOMPARE(fusedClamps.linear, steppedClamps.linear);
+    QCOMPARE(fusedClamps.angular, steppedClamps.angular);
+    QCOMPARE(steppedClamps.linear, uint64_t(2));
+    QCOMPARE(steppedClamps.angular, rotation ? uint64_t(2) : uint64_t(0));
+    QVERIFY(fused.linearVelocity[7] == state.linearVelocity[7]);
+    QVERIFY(fused.linearVelocity[1] != state.linearVelocity[1]);
 }
 
 QTEST_APPLESS_MAIN(TestRotation)

@@ -263,10 +263,38 @@ positionsForSolver4(BodyState& state, const uint32_t* ids, Real dt, bool rotatio
 
 } // namespace
 
+namespace {
+
+// Calls one(n) for the positions n of a list of `count` bodies, where the CPU has the vectors lanes8(n) or lanes4(n)
+// for runs of eight or four of them first (`lanes` as in Integrator.h).
+template <class Eight, class Four, class One>
+void overLanes(size_t count, int lanes, [[maybe_unused]] Eight&& lanes8, [[maybe_unused]] Four&& lanes4, One&& one) {
+    size_t n = 0;
+#ifdef RL_INTEGRATOR_LANES
+    static const bool wide = __builtin_cpu_supports("x86-64-v4");
+    const size_t width = lanes == 1 ? 1 : wide && lanes != 4 ? 8 : 4;
+    for (; width > 1 && n + width <= count; n += width)
+        width == 8 ? lanes8(n) : lanes4(n);
+#else
+    (void)lanes;
+#endif
+    for (; n < count; ++n)
+        one(n);
+}
+
+#ifndef RL_INTEGRATOR_LANES
+// Without GCC's vector types there are no lanes, and overLanes() takes the bodies one at a time.
+constexpr auto velocitiesForSolver8 = [](auto&&...) {};
+constexpr auto velocitiesForSolver4 = velocitiesForSolver8;
+constexpr auto positionsForSolver8 = velocitiesForSolver8;
+constexpr auto positionsForSolver4 = velocitiesForSolver8;
+#endif
+
+} // namespace
+
 void symplecticVelocitiesForSolver(BodyState& state, std::span<const uint32_t> bodies, Real dt, const Vec3& gravity,
                                    const Damping& damping, bool rotationEnabled, ClampCounters& clampCounters,
                                    std::span<SolverBody> solver, int lanes) {
-    size_t n = 0;
     if (!(dt > 0.0) || !std::isfinite(dt)) { // a step of no time (or a broken one) changes no velocity
         for (const uint32_t k : bodies) {
             solver[k + 1].v = state.linearVelocity[k];
@@ -274,45 +302,35 @@ void symplecticVelocitiesForSolver(BodyState& state, std::span<const uint32_t> b
         }
         return;
     }
-#ifdef RL_INTEGRATOR_LANES
-    static const bool wide = __builtin_cpu_supports("x86-64-v4");
-    const int width = lanes == 1 ? 1 : wide && lanes != 4 ? 8 : 4;
-    if (width == 8)
-        for (; n + 8 <= bodies.size(); n += 8)
-            velocitiesForSolver8(state, bodies.data() + n, dt, gravity, damping, rotationEnabled, clampCounters,
-                                 solver);
-    else if (width == 4)
-        for (; n + 4 <= bodies.size(); n += 4)
-            velocitiesForSolver4(state, bodies.data() + n, dt, gravity, damping, rotationEnabled, clampCounters,
-                                 solver);
-#else
-    (void)lanes;
-#endif
-    for (; n < bodies.size(); ++n)
-        velocitiesForSolverOne(state, bodies[n], dt, gravity, damping, rotationEnabled, clampCounters,
-                               solver[bodies[n] + 1]);
+    overLanes(
+        bodies.size(), lanes,
+        [&](size_t n) {
+            velocitiesForSolver8(state, &bodies[n], dt, gravity, damping, rotationEnabled, clampCounters, solver);
+        },
+        [&](size_t n) {
+            velocitiesForSolver4(state, &bodies[n], dt, gravity, damping, rotationEnabled, clampCounters, solver);
+        },
+        [&](size_t n) {
+            velocitiesForSolverOne(state, bodies[n], dt, gravity, damping, rotationEnabled, clampCounters,
+                                   solver[bodies[n] + 1]);
+        });
 }
 
 void symplecticPositionsForSolver(BodyState& state, std::span<const uint32_t> bodies, Real dt, bool rotationEnabled,
                                   std::span<const Vec3> startPosition, std::span<const Quat> startOrientation,
                                   std::span<SolverBody> solver, int lanes) {
-    size_t n = 0;
-#ifdef RL_INTEGRATOR_LANES
-    static const bool wide = __builtin_cpu_supports("x86-64-v4");
-    const int width = lanes == 1 ? 1 : wide && lanes != 4 ? 8 : 4;
-    if (width == 8)
-        for (; n + 8 <= bodies.size(); n += 8)
-            positionsForSolver8(state, bodies.data() + n, dt, rotationEnabled, startPosition, startOrientation, solver);
-    else if (width == 4)
-        for (; n + 4 <= bodies.size(); n += 4)
-            positionsForSolver4(state, bodies.data() + n, dt, rotationEnabled, startPosition, startOrientation, solver);
-#else
-    (void)lanes;
-#endif
-    for (; n < bodies.size(); ++n) {
-        const uint32_t k = bodies[n];
-        positionsForSolverOne(state, k, dt, rotationEnabled, startPosition[k], startOrientation[k], solver[k + 1]);
-    }
+    overLanes(
+        bodies.size(), lanes,
+        [&](size_t n) {
+            positionsForSolver8(state, &bodies[n], dt, rotationEnabled, startPosition, startOrientation, solver);
+        },
+        [&](size_t n) {
+            positionsForSolver4(state, &bodies[n], dt, rotationEnabled, startPosition, startOrientation, solver);
+        },
+        [&](size_t n) {
+            const uint32_t k = bodies[n];
+            positionsForSolverOne(state, k, dt, rotationEnabled, startPosition[k], startOrientation[k], solver[k + 1]);
+        });
 }
 
 } // namespace rl

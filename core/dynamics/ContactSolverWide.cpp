@@ -729,6 +729,17 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         lanes.y[l] = v.y;
         lanes.z[l] = v.z;
     };
+    // Where every body of the batch is isotropic (the sweeps' test, see prepare()), its inverse inertia is one number a
+    // lane, and the products below take isotropicTimes(), which gives the full products' bits.
+    bool isotropic = true;
+    for (int l = 0; l < W; ++l) {
+        const uint32_t i = static_cast<uint32_t>(l) < at.lanes ? m_solveOrder[at.first + static_cast<uint32_t>(l)] : 0;
+        const bool inUse = static_cast<uint32_t>(l) < at.lanes;
+        isotropic =
+            isotropic && in.bodies[inUse ? in.indexA[i] : 0].isotropic && in.bodies[inUse ? in.indexB[i] : 0].isotropic;
+    }
+    if (isotropic)
+        inertiaA = inertiaB = M3<V>{};
     for (int l = 0; l < W; ++l) {
         const bool inUse = static_cast<uint32_t>(l) < at.lanes;
         const uint32_t i = inUse ? m_solveOrder[at.first + static_cast<uint32_t>(l)] : 0;
@@ -752,11 +763,16 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         const SolverBody& bodyB = in.bodies[bb];
         invMassA[l] = bodyA.invMass;
         invMassB[l] = bodyB.invMass;
-        for (int c = 0; c < 3; ++c)
-            for (int k = 0; k < 3; ++k) {
-                inertiaA.m[c][k][l] = bodyA.invInertia[c][k];
-                inertiaB.m[c][k][l] = bodyB.invInertia[c][k];
-            }
+        if (isotropic) {
+            inertiaA.m[0][0][l] = bodyA.invInertia[0][0];
+            inertiaB.m[0][0][l] = bodyB.invInertia[0][0];
+        } else {
+            for (int c = 0; c < 3; ++c)
+                for (int k = 0; k < 3; ++k) {
+                    inertiaA.m[c][k][l] = bodyA.invInertia[c][k];
+                    inertiaB.m[c][k][l] = bodyB.invInertia[c][k];
+                }
+        }
         setLane(vA, l, bodyA.v);
         setLane(wA, l, bodyA.w);
         setLane(vB, l, bodyB.v);
@@ -785,6 +801,9 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
     const V friction = rounded<W>(frictionIn);
     const V massA = invMassA * scaleA, massB = invMassB * scaleB;
     const M3<V> inverseA = scaled(inertiaA, scaleA), inverseB = scaled(inertiaB, scaleB);
+    const auto times = [isotropic](const M3<V>& m, const L3<V>& x) {
+        return isotropic ? isotropicTimes(m.m[0][0], x) : m * x;
+    };
     const Mask still = (stillA > zero) | (stillB > zero);
     const L3<V> anchorOffset = select(still, zero3, rounded<W>(centreA - centreB));
     const L3<V> anchorBase = select(stillA > zero, centreB, centreA);
@@ -801,7 +820,8 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         rB[k] = rounded<W>(rA[k] + anchorOffset);
         baseSeparation[k] = rounded<W>(separation[k] - dot(rB[k] - rA[k], normal));
         const L3<V> angularA = cross(rA[k], normal), angularB = cross(rB[k], normal);
-        const V normalK = ((massA + massB) + dot(angularA, inverseA * angularA)) + dot(angularB, inverseB * angularB);
+        const V normalK =
+            ((massA + massB) + dot(angularA, times(inverseA, angularA))) + dot(angularB, times(inverseB, angularB));
         mass[k] = select(normalK > zero, rounded<W>(one / normalK), zero);
         impulse[k] = warm ? impulseIn[k] : zero;
         relativeVelocity[k] = dot(normal, (vB + cross(wB, rB[k])) - (vA + cross(wA, rA[k])));
@@ -831,13 +851,13 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
     }
     const L3<V> aA0 = cross(centerA, tangent[0]), aA1 = cross(centerA, tangent[1]);
     const L3<V> aB0 = cross(centerB, tangent[0]), aB1 = cross(centerB, tangent[1]);
-    const L3<V> iA1 = inverseA * aA1, iB1 = inverseB * aB1;
-    const V k00 = ((massA + massB) + dot(aA0, inverseA * aA0)) + dot(aB0, inverseB * aB0);
+    const L3<V> iA1 = times(inverseA, aA1), iB1 = times(inverseB, aB1);
+    const V k00 = ((massA + massB) + dot(aA0, times(inverseA, aA0))) + dot(aB0, times(inverseB, aB0));
     const V k11 = ((massA + massB) + dot(aA1, iA1)) + dot(aB1, iB1);
     const V k01 = dot(aA0, iA1) + dot(aB0, iB1);
     const V det = k00 * k11 - k01 * k01;
     const V inverseDet = select(det > zero, one / det, zero);
-    const V twist = dot(normal, inverseA * normal) + dot(normal, inverseB * normal);
+    const V twist = dot(normal, times(inverseA, normal)) + dot(normal, times(inverseB, normal));
     const V twistMass = select(twist > zero, rounded<W>(one / twist), zero);
     const Mask warmFriction = warm && m_settings.friction ? friction > zero : zero < zero;
 

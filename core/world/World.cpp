@@ -1660,11 +1660,12 @@ void World::continuousCollision() {
 void World::updateSleep() {
     const Real dt = 1.0 / m_fps;
     const uint32_t n = m_state.size();
-    std::vector<Real> islandMin(n, std::numeric_limits<Real>::max());
-    for (uint32_t i = 0; i < n; ++i) {
-        if (m_state.isStatic(i))
-            continue;
-        if (m_state.isAwake(i)) {
+    // Each awake body's sleep clock alone, so a team shares the bodies out with the same results (on two threads
+    // this was a serial stretch of every step).
+    const auto clocks = [&](size_t begin, size_t end) {
+        for (uint32_t i = static_cast<uint32_t>(begin); i < end; ++i) {
+            if (m_state.isStatic(i) || !m_state.isAwake(i))
+                continue;
             // How far any point of the body has got from where it was when its sleep clock started, bounded by
             // the centre's displacement plus radius times the rotation angle (Jolt's sleep test, with one sphere
             // for all the body's points). The clock runs while that stays within the distance a body moving at
@@ -1677,8 +1678,16 @@ void World::updateSleep() {
             else
                 restartSleepClock(i);
         }
-        islandMin[m_island[i]] = std::min(islandMin[m_island[i]], m_state.isAwake(i) ? m_sleepTime[i] : 1e30);
-    }
+    };
+    if (m_team && n >= kMinBodiesForTeam)
+        teamParallelFor()(n, clocks);
+    else
+        clocks(0, n);
+    std::vector<Real>& islandMin = m_islandSleepTime;
+    islandMin.assign(n, std::numeric_limits<Real>::max());
+    for (uint32_t i = 0; i < n; ++i)
+        if (!m_state.isStatic(i))
+            islandMin[m_island[i]] = std::min(islandMin[m_island[i]], m_state.isAwake(i) ? m_sleepTime[i] : 1e30);
     for (uint32_t i = 0; i < n; ++i) {
         if (m_state.isStatic(i) || !m_state.isAwake(i) || islandMin[m_island[i]] < m_tuning.timeToSleep)
             continue;

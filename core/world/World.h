@@ -324,6 +324,7 @@ private:
     std::vector<Quat> m_initialShapeOrientation;
     std::vector<ProxyKey> m_proxies;
     std::vector<Real> m_sleepTime;
+    std::vector<Real> m_islandSleepTime; // updateSleep(): per island root, the least sleep time of its awake bodies
     // Pose of each body when its sleep clock last started (see updateSleep()).
     std::vector<Vec3> m_sleepAnchorPosition;
     std::vector<Quat> m_sleepAnchorOrientation;

@@ -329,6 +329,32 @@ private slots:
         QCOMPARE(hashes[0], hashes[2]);
     }
 
+    // ramps.obj's 642 cubes on two threads: the team also shares the sleep clocks out (World::updateSleep()), and
+    // the cubes that come to rest fall asleep on the same frames as on one thread.
+    void sleepOnTwoThreadsGivesIdenticalResults() {
+        Result<Scene> s = importScene(RL_SOURCE_DIR "/resources/scenes/ramps.obj");
+        QVERIFY(s.ok());
+        uint64_t hashes[2];
+        int awake[2] = {};
+        int64_t awakeFrames[2] = {}; // awake bodies summed over the frames
+        for (int run = 0; run < 2; ++run) {
+            WorldOptions options;
+            options.threads = run + 1;
+            World w = makeWorld(*s, options);
+            for (int i = 0; i < 150; ++i) {
+                w.step();
+                awakeFrames[run] += w.diagnostics().awakeBodies;
+            }
+            hashes[run] = hashState(w);
+            awake[run] = w.diagnostics().awakeBodies;
+        }
+        qInfo("awake after 150 frames: %d of 642", awake[0]);
+        QCOMPARE(hashes[0], hashes[1]);
+        QCOMPARE(awake[0], awake[1]);
+        QCOMPARE(awakeFrames[0], awakeFrames[1]);
+        QVERIFY(awake[0] < 600); // some of the 642 sleep
+    }
+
     // One pile of 400 boxes is one island. It is cut in two parts for the solver on one thread and on two
     // (World::cutIslands()), and the two threads each sweep a part; while the falling boxes are in smaller islands,
     // the threads split each level of the solver's schedule or share the islands out.

@@ -732,11 +732,10 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
     // Where every body of the batch is isotropic (the sweeps' test, see prepare()), its inverse inertia is one number a
     // lane, and the products below take isotropicTimes(), which gives the full products' bits.
     bool isotropic = true;
-    for (int l = 0; l < W; ++l) {
-        const uint32_t i = static_cast<uint32_t>(l) < at.lanes ? m_solveOrder[at.first + static_cast<uint32_t>(l)] : 0;
-        const bool inUse = static_cast<uint32_t>(l) < at.lanes;
-        isotropic =
-            isotropic && in.bodies[inUse ? in.indexA[i] : 0].isotropic && in.bodies[inUse ? in.indexB[i] : 0].isotropic;
+    for (uint32_t l = 0; l < W; ++l) {
+        const uint32_t i = l < at.lanes ? m_solveOrder[at.first + l] : 0;
+        const uint32_t a = l < at.lanes ? in.indexA[i] : 0, bb = l < at.lanes ? in.indexB[i] : 0; // empty: entry 0
+        isotropic = isotropic && in.bodies[a].isotropic && in.bodies[bb].isotropic;
     }
     if (isotropic)
         inertiaA = inertiaB = M3<V>{};

@@ -53,6 +53,15 @@ bool isotropicMoments(const BodyState& state, uint32_t k) {
 #if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
 #define RL_INTEGRATOR_LANES 1
 #define RL_LANES_INLINE inline __attribute__((always_inline))
+// As in ContactSolverWide.cpp: the lanes' functions are built for AVX-512 and AVX2 (chosen where they are called),
+// except under AddressSanitizer, where they stay with the baseline instructions.
+#if !defined(__SANITIZE_ADDRESS__)
+#define RL_INTEGRATOR_WIDE8 __attribute__((target("arch=x86-64-v4")))
+#define RL_INTEGRATOR_WIDE4 __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define RL_INTEGRATOR_WIDE8
+#define RL_INTEGRATOR_WIDE4
+#endif
 
 template <int W>
 struct Lanes;
@@ -234,29 +243,25 @@ RL_LANES_INLINE void velocitiesForSolverLanes(BodyState& state, const uint32_t* 
     }
 }
 
-__attribute__((target("arch=x86-64-v4"))) void velocitiesForSolver8(BodyState& state, const uint32_t* ids, Real dt,
-                                                                    const Vec3& gravity, const Damping& damping,
-                                                                    bool rotationEnabled, ClampCounters& clampCounters,
-                                                                    std::span<SolverBody> solver) {
+RL_INTEGRATOR_WIDE8 void velocitiesForSolver8(BodyState& state, const uint32_t* ids, Real dt, const Vec3& gravity,
+                                              const Damping& damping, bool rotationEnabled,
+                                              ClampCounters& clampCounters, std::span<SolverBody> solver) {
     velocitiesForSolverLanes<8>(state, ids, dt, gravity, damping, rotationEnabled, clampCounters, solver);
 }
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void
-velocitiesForSolver4(BodyState& state, const uint32_t* ids, Real dt, const Vec3& gravity, const Damping& damping,
-                     bool rotationEnabled, ClampCounters& clampCounters, std::span<SolverBody> solver) {
+RL_INTEGRATOR_WIDE4 void velocitiesForSolver4(BodyState& state, const uint32_t* ids, Real dt, const Vec3& gravity,
+                                              const Damping& damping, bool rotationEnabled,
+                                              ClampCounters& clampCounters, std::span<SolverBody> solver) {
     velocitiesForSolverLanes<4>(state, ids, dt, gravity, damping, rotationEnabled, clampCounters, solver);
 }
 
-__attribute__((target("arch=x86-64-v4"))) void positionsForSolver8(BodyState& state, const uint32_t* ids, Real dt,
-                                                                   bool rotationEnabled,
-                                                                   std::span<const Vec3> startPosition,
-                                                                   std::span<const Quat> startOrientation,
-                                                                   std::span<SolverBody> solver) {
+RL_INTEGRATOR_WIDE8 void positionsForSolver8(BodyState& state, const uint32_t* ids, Real dt, bool rotationEnabled,
+                                             std::span<const Vec3> startPosition,
+                                             std::span<const Quat> startOrientation, std::span<SolverBody> solver) {
     positionsForSolverLanes<8>(state, ids, dt, rotationEnabled, startPosition, startOrientation, solver);
 }
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void
-positionsForSolver4(BodyState& state, const uint32_t* ids, Real dt, bool rotationEnabled,
-                    std::span<const Vec3> startPosition, std::span<const Quat> startOrientation,
-                    std::span<SolverBody> solver) {
+RL_INTEGRATOR_WIDE4 void positionsForSolver4(BodyState& state, const uint32_t* ids, Real dt, bool rotationEnabled,
+                                             std::span<const Vec3> startPosition,
+                                             std::span<const Quat> startOrientation, std::span<SolverBody> solver) {
     positionsForSolverLanes<4>(state, ids, dt, rotationEnabled, startPosition, startOrientation, solver);
 }
 #endif

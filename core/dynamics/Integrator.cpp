@@ -13,17 +13,11 @@ Vec3 inertiaOf(const BodyState& state, uint32_t i) {
     return state.info[i].principalMoments;
 }
 
-// Equal principal moments to 1e-12 relative: the gyroscopic torque w x (I w) is then below 1e-12 |I| |w|^2.
-bool isotropic(const Vec3& inertia) {
-    const Real tolerance = 1e-12 * inertia.x;
-    return std::abs(inertia.y - inertia.x) <= tolerance && std::abs(inertia.z - inertia.x) <= tolerance;
-}
-
 // Symplectic Euler's angular velocity over dt with damping rate c: the implicit midpoint gyroscopic step.
 void symplecticAngularVelocity(BodyState& state, uint32_t i, Real dt, Real c) {
     const Vec3 inertia = inertiaOf(state, i);
     Vec3& w = state.angularVelocity[i];
-    if (isotropic(inertia)) {
+    if (detail::isotropicMoments(inertia)) {
         // w x (I w) vanishes when the three moments are equal (a cube, a sphere): no gyroscopic term, and no need to
         // go to the body frame and back. Cubes are most of every stacking scene.
         w *= detail::implicitDecay(c, dt);

@@ -121,6 +121,12 @@ void integrateSmooth(BodyState& state, BodyRange range, Real dt, const Vec3& gra
 // phase writes the smooth displacement and velocity, the position phase checks whether anything changed v in between.
 
 namespace detail {
+// Principal moments equal to 1e-12 relative: the gyroscopic torque w x (I w) is then below 1e-12 |I| |w|^2, and the
+// integrators turn such a body (a cube, a sphere) without it.
+inline bool isotropicMoments(const Vec3& inertia) {
+    const Real tolerance = 1e-12 * inertia.x;
+    return std::abs(inertia.y - inertia.x) <= tolerance && std::abs(inertia.z - inertia.x) <= tolerance;
+}
 // True where an explicit decay over h would overshoot (see "Stiff damping" above).
 inline bool isStiff(Real c, Real h) {
     return c * h > 1.0;

@@ -1,10 +1,11 @@
 // symplecticVelocitiesForSolver() and symplecticPositionsForSolver(): symplectic Euler's two phases in the world's
 // substeps, with the solver's copies of what they change, several bodies at a time in the lanes of one vector. Every
-// lane does what the scalar code does (symplecticPositionPhase() in Integrator.cpp, then the motion since the step
-// began), operation for operation in glm's order, so the numbers are the same to the bit: this file is compiled without
-// contracting a * b + c into fused multiply-adds (core/CMakeLists.txt). A lane whose rotation over the substep is too
-// large for the series of rotationFromVector() takes that function's sine and cosine, and a body whose inverse inertia
-// is not isotropic takes BodyState::worldInverseInertia(), both one lane at a time.
+// lane does what the scalar code does (symplecticVelocityPhase() and symplecticPositionPhase() in Integrator.cpp, the
+// motion since the step began), operation for operation in glm's order, so the numbers are the same to the bit: this
+// file is compiled without contracting a * b + c into fused multiply-adds (core/CMakeLists.txt). One lane at a time: a
+// body with the gyroscopic term takes the scalar velocity phase, a rotation over the substep too large for the series
+// of rotationFromVector() takes that function's sine and cosine, and an inverse inertia that is not isotropic takes
+// BodyState::worldInverseInertia().
 #include "dynamics/Gyroscopic.h"
 #include "dynamics/Integrator.h"
 
@@ -40,14 +41,6 @@ void velocitiesForSolverOne(BodyState& state, uint32_t k, Real dt, const Vec3& g
                         rotationEnabled, clampCounters);
     solver.v = state.linearVelocity[k];
     solver.w = rotationEnabled ? state.angularVelocity[k] : Vec3(0.0);
-}
-
-// Whether symplectic Euler turns w of body k without the gyroscopic term (Integrator.cpp's isotropic(): the
-// principal moments equal to 1e-12).
-bool isotropicMoments(const BodyState& state, uint32_t k) {
-    const Vec3 inertia = state.info[k].principalMoments;
-    const Real tolerance = 1e-12 * inertia.x;
-    return std::abs(inertia.y - inertia.x) <= tolerance && std::abs(inertia.z - inertia.x) <= tolerance;
 }
 
 #if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
@@ -197,7 +190,7 @@ RL_LANES_INLINE void velocitiesForSolverLanes(BodyState& state, const uint32_t* 
     bool lane[W];
     for (int l = 0; l < W; ++l) {
         const uint32_t k = ids[l];
-        lane[l] = state.isMoving(k) && (!rotationEnabled || isotropicMoments(state, k));
+        lane[l] = state.isMoving(k) && (!rotationEnabled || detail::isotropicMoments(state.info[k].principalMoments));
         const Vec3& v = state.linearVelocity[k];
         vx[l] = v.x;
         vy[l] = v.y;

@@ -341,14 +341,14 @@ private slots:
             WorldOptions options;
             options.threads = run + 1;
             World w = makeWorld(*s, options);
-            for (int i = 0; i < 150; ++i) {
+            for (int i = 0; i < 120; ++i) {
                 w.step();
                 awakeFrames[run] += w.diagnostics().awakeBodies;
             }
             hashes[run] = hashState(w);
             awake[run] = w.diagnostics().awakeBodies;
         }
-        qInfo("awake after 150 frames: %d of 642", awake[0]);
+        qInfo("awake after 120 frames: %d of 642", awake[0]);
         QCOMPARE(hashes[0], hashes[1]);
         QCOMPARE(awake[0], awake[1]);
         QCOMPARE(awakeFrames[0], awakeFrames[1]);

@@ -67,6 +67,14 @@ struct Lanes<8> {
     typedef double V __attribute__((vector_size(64)));
 };
 
+// Lane l of the three vectors x, y, z gets v's components.
+template <class V>
+RL_LANES_INLINE void setLane(V& x, V& y, V& z, int l, const Vec3& v) {
+    x[l] = v.x;
+    y[l] = v.y;
+    z[l] = v.z;
+}
+
 // A quaternion with W lanes per component.
 template <class V>
 struct QuatL {
@@ -105,17 +113,9 @@ RL_LANES_INLINE void positionsForSolverLanes(BodyState& state, const uint32_t* i
     for (int l = 0; l < W; ++l) {
         const uint32_t k = ids[l];
         const SolverBody& s = solver[k + 1];
-        vx[l] = s.v.x;
-        vy[l] = s.v.y;
-        vz[l] = s.v.z;
-        const Vec3 w = rotationEnabled ? s.w : state.angularVelocity[k];
-        wx[l] = w.x;
-        wy[l] = w.y;
-        wz[l] = w.z;
-        const Vec3& p = state.position[k];
-        px[l] = p.x;
-        py[l] = p.y;
-        pz[l] = p.z;
+        setLane(vx, vy, vz, l, s.v);
+        setLane(wx, wy, wz, l, rotationEnabled ? s.w : state.angularVelocity[k]);
+        setLane(px, py, pz, l, state.position[k]);
         const Quat& o = state.orientation[k];
         q.w[l] = o.w;
         q.x[l] = o.x;
@@ -191,14 +191,8 @@ RL_LANES_INLINE void velocitiesForSolverLanes(BodyState& state, const uint32_t* 
     for (int l = 0; l < W; ++l) {
         const uint32_t k = ids[l];
         lane[l] = state.isMoving(k) && (!rotationEnabled || detail::isotropicMoments(state.info[k].principalMoments));
-        const Vec3& v = state.linearVelocity[k];
-        vx[l] = v.x;
-        vy[l] = v.y;
-        vz[l] = v.z;
-        const Vec3& w = state.angularVelocity[k];
-        wx[l] = w.x;
-        wy[l] = w.y;
-        wz[l] = w.z;
+        setLane(vx, vy, vz, l, state.linearVelocity[k]);
+        setLane(wx, wy, wz, l, state.angularVelocity[k]);
         linear[l] = damping.linear + state.linearDamping[k];
         angular[l] = damping.angular + state.angularDamping[k];
     }

@@ -457,6 +457,7 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
         std::memset(static_cast<void*>(&scales), 0, sizeof(BatchScales<W>));
         batch.firstPoint = at.firstPoint;
         batch.pointCount = at.pointCount;
+        batch.isotropic = isotropicBatch<W>(inputs, at);
         for (uint32_t k = 0; k < at.pointCount; ++k)
             std::memset(static_cast<void*>(&points[at.firstPoint + k]), 0, sizeof(BatchPoint<W>));
         if (maxImpulse && at.pointCount > 0)
@@ -527,13 +528,6 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
             }
             if (!wideSetUp || !(W == 8 ? setUpBatch8(inputs, b) : setUpBatch4(inputs, b)))
                 fill(b);
-            // Whether every body of the batch is isotropic (SolverBody::isotropic), so that its sweeps multiply by one
-            // number for the inverse inertia. Empty lanes read entry 0, so it counts too.
-            Batch<W>& batch = batches[b];
-            batch.isotropic = true;
-            for (int l = 0; l < W; ++l)
-                batch.isotropic = batch.isotropic && inputs.bodies[batch.bodyA[l]].isotropic &&
-                                  inputs.bodies[batch.bodyB[l]].isotropic;
         }
     });
 }

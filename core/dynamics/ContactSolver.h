@@ -360,6 +360,18 @@ private:
     // vector types (setUpConstraint() then sets them up one by one).
     template <int W>
     bool setUpBatch(BatchStore<W>& store, const SetUpInputs& inputs, size_t b);
+    // Whether every body of the batch laid out at `at` is SolverBody::isotropic (Batch::isotropic). Empty lanes read
+    // the static entry 0, so it counts too.
+    template <int W>
+    bool isotropicBatch(const SetUpInputs& inputs, const BatchLayout& at) const {
+        bool isotropic = true;
+        for (uint32_t l = 0; l < W; ++l) {
+            const uint32_t i = l < at.lanes ? m_solveOrder[at.first + l] : 0;
+            const uint32_t a = l < at.lanes ? inputs.indexA[i] : 0, b = l < at.lanes ? inputs.indexB[i] : 0;
+            isotropic = isotropic && inputs.bodies[a].isotropic && inputs.bodies[b].isotropic;
+        }
+        return isotropic;
+    }
     bool setUpBatch4(const SetUpInputs& inputs, size_t b);
     bool setUpBatch8(const SetUpInputs& inputs, size_t b);
     size_t batchCount() const { return m_width == 8 ? m_store8.batches.size() : m_store4.batches.size(); }

@@ -729,14 +729,9 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         lanes.y[l] = v.y;
         lanes.z[l] = v.z;
     };
-    // Where every body of the batch is isotropic (the sweeps' test, see prepare()), its inverse inertia is one number a
-    // lane, and the products below take isotropicTimes(), which gives the full products' bits.
-    bool isotropic = true;
-    for (uint32_t l = 0; l < W; ++l) {
-        const uint32_t i = l < at.lanes ? m_solveOrder[at.first + l] : 0;
-        const uint32_t a = l < at.lanes ? in.indexA[i] : 0, bb = l < at.lanes ? in.indexB[i] : 0; // empty: entry 0
-        isotropic = isotropic && in.bodies[a].isotropic && in.bodies[bb].isotropic;
-    }
+    // Where every body of the batch is isotropic, its inverse inertia is one number a lane, and the products below take
+    // isotropicTimes(), which gives the full products' bits.
+    const bool isotropic = batch.isotropic = isotropicBatch<W>(in, at);
     if (isotropic)
         inertiaA = inertiaB = M3<V>{};
     for (int l = 0; l < W; ++l) {

@@ -352,9 +352,11 @@ void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bo
 
 int ContactSolver::s_widestLanes = 8;
 bool ContactSolver::s_wideSetUp = true;
+bool ContactSolver::s_keepSeparations = true;
 
 void ContactSolver::buildBatches(const SetUpInputs& inputs, const ParallelFor& parallelFor) {
     m_batchesAhead = false;
+    m_separationsKept = false;
     // Eight lanes of doubles need AVX-512 (x86-64-v4); elsewhere 512-bit vectors split into halves ran 2.2x slower
     // than four lanes in one AVX2 register (a microbenchmark of the row update, 2026-11-26).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
@@ -439,6 +441,7 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
     points.resize(pointTotal);
     const bool maxImpulse = m_settings.restitution;
     store.maxImpulse.resize(maxImpulse ? pointTotal : 0);
+    store.separation.resize(pointTotal); // written by the first sweep (Motion::Moved)
     m_laneOf.resize(m_count);
     m_order.resize(m_count);
     // W constraints at a time, in vectors (setUpBatch()). Set up one by one, large_pyramid's prepare_contacts took
@@ -725,8 +728,9 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
 
 } // namespace
 
-void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias) {
-    solveBatchRange(bodies, useBias, 0, batchCount());
+void ContactSolver::solve(std::span<SolverBody> bodies, bool useBias, Motion motion) {
+    solveBatchRange(bodies, useBias, 0, batchCount(), m_separationsKept ? motion : Motion::Moved);
+    m_separationsKept = true;
     countSweep();
 }
 

@@ -170,8 +170,17 @@ public:
     // Called once per substep, after the velocities were integrated: applies the accumulated impulses (those of
     // the last step at first, then this step's so far).
     void warmStart(std::span<SolverBody> bodies);
+    // Whether the bodies' motion since the step began (SolverBody::dp, dR) may have changed since the last sweep.
+    // A point's separation depends on nothing else, so a sweep after Moved takes it from the motion and keeps it, and
+    // a sweep after Unchanged reads the kept one: the same numbers, without the anchors' two rotations and the gather
+    // of dp and dR. Moved is always right; Unchanged is the caller's promise that a sweep since the last prepare()
+    // took the separations and that no dp or dR changed since. (The world's substep: the velocities, the warm start
+    // and the solve sweeps, the positions, the relax sweep. The separations stay the same from one relax sweep
+    // through the next substep's solve sweeps.)
+    enum class Motion : uint8_t { Moved, Unchanged };
     // useBias = true: the soft solve that pushes overlap apart; false: the relax pass that removes the bias velocity.
-    void solve(std::span<SolverBody> bodies, bool useBias);
+    // Motion::Unchanged is taken as Moved in the first sweep after prepare().
+    void solve(std::span<SolverBody> bodies, bool useBias, Motion motion = Motion::Moved);
 
     // warmStart() and solve() sweep the constraints level by level (see scheduleLevels()), in batches: the
     // constraints of one level share no moving body, so they are packed into batches of laneWidth() lanes
@@ -182,7 +191,8 @@ public:
     //
     // The same, split up for several threads: batches begin..end within one level may run on different threads at
     // once. A substep is beginSubstep() once, then warmStartBatchRange() over every level, then sweeps of
-    // solveBatchRange() over every level, each sweep followed by countSweep() once.
+    // solveBatchRange() over every level, each sweep followed by countSweep() once. Every range of one sweep is given
+    // the same Motion (see solve()), and the first sweep after prepare() must be Moved.
     size_t levelCount() const { return m_levelStart.empty() ? 0 : m_levelStart.size() - 1; }
     size_t levelBegin(size_t level) const { return m_levelStart[level]; } // positions in solveOrder()
     size_t levelEnd(size_t level) const { return m_levelStart[level + 1]; }
@@ -199,7 +209,8 @@ public:
     }
     void beginSubstep() { m_batchesAhead = true; }
     void warmStartBatchRange(std::span<SolverBody> bodies, size_t begin, size_t end);
-    void solveBatchRange(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
+    void solveBatchRange(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end,
+                         Motion motion = Motion::Moved);
     void countSweep();
 
     // The reference: one constraint after the other in manifold order (segment by segment), with scalar arithmetic.
@@ -240,6 +251,9 @@ public:
     // with the same numbers as setUpConstraint(). For tests, which compare the two: false sets every constraint up
     // alone; it applies to the next prepare().
     static void setWideSetUp(bool on) { s_wideSetUp = on; }
+    // false takes every point's separation in every sweep, as if each were given Motion::Moved. For tests, which
+    // compare the two; set it while no sweep runs.
+    static void setKeepSeparations(bool on) { s_keepSeparations = on; }
 
     // The whole constraint records, in manifold order, with the impulses of the last sweep. prepare() keeps them only
     // when asked to (keepConstraints()); else this is empty. The sequential sweeps work on these records.
@@ -319,6 +333,8 @@ private:
         // 3.58-3.63 ms a step, now 1.57-1.60, 6.48-6.53 and 3.24-3.27 ms; its frames 5-45 on one pinned CPU, three
         // interleaved runs, 2026-11-27.)
         std::vector<Lanes<W>> maxImpulse;
+        // Each point's separation, as the last sweep after Motion::Moved took it (sized like points).
+        std::vector<Lanes<W>> separation;
     };
     // Where buildBatches() puts a batch: its first constraint in m_solveOrder, its lanes, and its point slots.
     struct BatchLayout {
@@ -349,11 +365,11 @@ private:
     // The sweeps over batches begin..end of W lanes (ContactSolverWide.cpp).
     void warmStartBatches4(std::span<SolverBody> bodies, size_t begin, size_t end);
     void warmStartBatches8(std::span<SolverBody> bodies, size_t begin, size_t end);
-    void solveBatches4(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
-    void solveBatches8(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
+    void solveBatches4(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end, Motion motion);
+    void solveBatches8(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end, Motion motion);
     template <int W>
     void warmStartBatches(BatchStore<W>& store, std::span<SolverBody> bodies, size_t begin, size_t end);
-    template <int W, bool kMaxImpulse>
+    template <int W, bool kMaxImpulse, bool kKeptSeparation>
     void solveBatches(BatchStore<W>& store, std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end);
     // Sets batch b's constraints up in its lanes, all W at once, with the constraints' m_order and m_laneOf entries
     // and, where kept, their records (ContactSolverWide.cpp). False, having written nothing, in a build without
@@ -410,7 +426,9 @@ private:
     int m_width = 4;
     static int s_widestLanes;            // 8, or 4 to keep to four lanes
     static bool s_wideSetUp;             // setWideSetUp()
+    static bool s_keepSeparations;       // setKeepSeparations()
     mutable bool m_batchesAhead = false; // the batches hold newer impulses than m_constraints
+    bool m_separationsKept = false;      // a whole sweep by solve() kept the separations since prepare()
     ContactSolverSettings m_settings;
     Real m_inverseH = 0.0;
     Real m_h = 0.0;

@@ -551,7 +551,7 @@ RL_LANES_INLINE void ContactSolver::warmStartBatches(BatchStore<W>& store, std::
     }
 }
 
-template <int W, bool kMaxImpulse>
+template <int W, bool kMaxImpulse, bool kKeptSeparation>
 RL_LANES_INLINE void ContactSolver::solveBatches(BatchStore<W>& store, std::span<SolverBody> bodies, bool useBias,
                                                  size_t begin, size_t end) {
     using V = typename Vec<W>::V;
@@ -564,14 +564,22 @@ RL_LANES_INLINE void ContactSolver::solveBatches(BatchStore<W>& store, std::span
     for (size_t n = begin; n < end; ++n) {
         Batch<W>& batch = store.batches[n];
         Side<V> a, b;
-        gatherSides<W, true>(batch, store.scales[n], bodies, a, b);
+        gatherSides<W, !kKeptSeparation>(batch, store.scales[n], bodies, a, b);
         const L3<V> normal = load<W>(batch.normal);
         for (uint32_t k = 0; k < batch.pointCount; ++k) {
             BatchPoint<W>& p = store.points[batch.firstPoint + k];
-            // Current separation from the motion since the step began; anchors follow each body's rotation.
             const L3<V> rA = load<W>(p.rA), rB = anchorB<W>(batch, p);
-            const L3<V> d = (b.dp - a.dp) + (b.dR * rB - a.dR * rA);
-            const V s = dot(normal, d) + get<W>(p.baseSeparation);
+            // Current separation from the motion since the step began (anchors follow each body's rotation), or as
+            // a sweep since the last motion took it (Motion::Unchanged).
+            Lanes<W>& kept = store.separation[batch.firstPoint + k];
+            V s;
+            if constexpr (kKeptSeparation) {
+                s = get<W>(kept);
+            } else {
+                const L3<V> d = (b.dp - a.dp) + (b.dR * rB - a.dR * rA);
+                s = dot(normal, d) + get<W>(p.baseSeparation);
+                put<W>(kept, s);
+            }
             // Speculative points (s > 0) may close the gap within this substep; touching ones are soft while the
             // bias pushes them apart, and rigid in the relax pass.
             const auto speculative = s > zero;
@@ -644,17 +652,25 @@ RL_WIDE4 void ContactSolver::warmStartBatches4(std::span<SolverBody> bodies, siz
 RL_WIDE8 void ContactSolver::warmStartBatches8(std::span<SolverBody> bodies, size_t begin, size_t end) {
     warmStartBatches(m_store8, bodies, begin, end);
 }
-RL_WIDE4 void ContactSolver::solveBatches4(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end) {
+RL_WIDE4 void ContactSolver::solveBatches4(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end,
+                                           Motion motion) {
+    const bool kept = motion == Motion::Unchanged;
     if (m_settings.restitution)
-        solveBatches<4, true>(m_store4, bodies, useBias, begin, end);
+        kept ? solveBatches<4, true, true>(m_store4, bodies, useBias, begin, end)
+             : solveBatches<4, true, false>(m_store4, bodies, useBias, begin, end);
     else
-        solveBatches<4, false>(m_store4, bodies, useBias, begin, end);
+        kept ? solveBatches<4, false, true>(m_store4, bodies, useBias, begin, end)
+             : solveBatches<4, false, false>(m_store4, bodies, useBias, begin, end);
 }
-RL_WIDE8 void ContactSolver::solveBatches8(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end) {
+RL_WIDE8 void ContactSolver::solveBatches8(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end,
+                                           Motion motion) {
+    const bool kept = motion == Motion::Unchanged;
     if (m_settings.restitution)
-        solveBatches<8, true>(m_store8, bodies, useBias, begin, end);
+        kept ? solveBatches<8, true, true>(m_store8, bodies, useBias, begin, end)
+             : solveBatches<8, true, false>(m_store8, bodies, useBias, begin, end);
     else
-        solveBatches<8, false>(m_store8, bodies, useBias, begin, end);
+        kept ? solveBatches<8, false, true>(m_store8, bodies, useBias, begin, end)
+             : solveBatches<8, false, false>(m_store8, bodies, useBias, begin, end);
 }
 
 #if defined(__GNUC__) && !defined(__clang__)
@@ -1008,11 +1024,14 @@ void ContactSolver::warmStartBatchRange(std::span<SolverBody> bodies, size_t beg
         warmStartBatches4(bodies, begin, end);
 }
 
-void ContactSolver::solveBatchRange(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end) {
+void ContactSolver::solveBatchRange(std::span<SolverBody> bodies, bool useBias, size_t begin, size_t end,
+                                    Motion motion) {
+    if (!s_keepSeparations)
+        motion = Motion::Moved;
     if (m_width == 8)
-        solveBatches8(bodies, useBias, begin, end);
+        solveBatches8(bodies, useBias, begin, end, motion);
     else
-        solveBatches4(bodies, useBias, begin, end);
+        solveBatches4(bodies, useBias, begin, end, motion);
 }
 
 } // namespace rl

@@ -1397,6 +1397,14 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
             if (timed)
                 t.emplace(m_profile, stage);
         };
+        // Whether dp and dR changed since the last sweep: the first sweep after a position phase takes the points'
+        // separations, and the sweeps after it until the next one reuse them (ContactSolver::Motion).
+        bool moved = true;
+        const auto motion = [&moved] {
+            const ContactSolver::Motion m = moved ? ContactSolver::Motion::Moved : ContactSolver::Motion::Unchanged;
+            moved = false;
+            return m;
+        };
         for (int s = 0; s < substeps; ++s) {
             timer(Stage::IntegrateVelocities);
             if (m_integrator == Integrator::SymplecticEuler) {
@@ -1412,14 +1420,15 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
                 solver.warmStart(bodies);
                 timer(Stage::Solve);
                 for (int it = 0; it < m_iterations; ++it)
-                    solver.solve(bodies, true);
+                    solver.solve(bodies, true, motion());
             } else {
                 if (member == 0)
                     solver.beginSubstep(); // read only by the solve sweeps, after the warm start's barriers
                 barrier();
                 sweep([&](size_t begin, size_t end) { solver.warmStartBatchRange(bodies, begin, end); });
                 for (int it = 0; it < m_iterations; ++it) {
-                    sweep([&](size_t begin, size_t end) { solver.solveBatchRange(bodies, true, begin, end); });
+                    const ContactSolver::Motion m = motion();
+                    sweep([&](size_t begin, size_t end) { solver.solveBatchRange(bodies, true, begin, end, m); });
                     if (member == 0)
                         solver.countSweep();
                 }
@@ -1448,14 +1457,16 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
                 // turn of w).
                 toSolver(mine);
             }
+            moved = true;
             barrier();
             timer(Stage::Relax);
             for (int it = 0; it < m_tuning.relaxIterations; ++it) {
+                const ContactSolver::Motion m = motion();
                 if (members == 1) {
-                    solver.solve(bodies, false);
+                    solver.solve(bodies, false, m);
                     continue;
                 }
-                sweep([&](size_t begin, size_t end) { solver.solveBatchRange(bodies, false, begin, end); });
+                sweep([&](size_t begin, size_t end) { solver.solveBatchRange(bodies, false, begin, end, m); });
                 if (member == 0)
                     solver.countSweep();
             }

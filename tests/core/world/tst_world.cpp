@@ -1,5 +1,6 @@
 // The world's step on small scenes: free flight, resting contact, stacking, effects and their counters,
 // sleeping, and determinism across runs and thread counts.
+#include "dynamics/ContactSolver.h"
 #include "io/SceneImport.h"
 #include "scene/BodyProperties.h"
 #include "scene/SceneLibrary.h"
@@ -353,6 +354,33 @@ private slots:
         QCOMPARE(awake[0], awake[1]);
         QCOMPARE(awakeFrames[0], awakeFrames[1]);
         QVERIFY(awake[0] < 600); // some of the 642 sleep
+    }
+
+    // The solver's sweeps after the first since a position phase reuse each point's separation
+    // (ContactSolver::Motion): ramps.obj's cubes landing give the frames of sweeps that take every separation again,
+    // on one thread and on two.
+    void keptSeparationsGiveTheFramesOfTakenOnes() {
+        Result<Scene> s = importScene(RL_SOURCE_DIR "/resources/scenes/ramps.obj");
+        QVERIFY(s.ok());
+        uint64_t hashes[4];
+        int contacts = 0;
+        for (int run = 0; run < 4; ++run) {
+            ContactSolver::setKeepSeparations(run < 2);
+            WorldOptions options;
+            options.threads = run % 2 + 1;
+            World w = makeWorld(*s, options);
+            for (int i = 0; i < 90; ++i) {
+                w.step();
+                contacts = std::max(contacts, w.diagnostics().contactPoints);
+            }
+            hashes[run] = hashState(w);
+        }
+        ContactSolver::setKeepSeparations(true);
+        qInfo("most contact points in a frame: %d", contacts);
+        QVERIFY(contacts > 1000);
+        QCOMPARE(hashes[0], hashes[2]);
+        QCOMPARE(hashes[1], hashes[3]);
+        QCOMPARE(hashes[0], hashes[1]);
     }
 
     // One pile of 400 boxes is one island. It is cut in two parts for the solver on one thread and on two

@@ -66,6 +66,8 @@ uint32_t evenShare(size_t n, size_t (&load)[2]) {
 
 } // namespace
 
+size_t World::s_runBodies = World::kRunBodies;
+
 Result<World> World::create(const Scene& scene, const WorldOptions& options) {
     World w;
     const WorldSettings& ws = scene.world;
@@ -899,21 +901,32 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
     const int substeps = m_substeps * refinement;
     planCuts();
     std::span<SolveScratch> solved(&scratch, 1);
+    const size_t members = m_team ? static_cast<size_t>(m_team->size()) : 1;
+    m_runScratch.resize(members);
     if (splitByIslands()) {
         m_profile.count(Counter::IslandsSharedOut, 1);
         StageTimer timer(m_profile, Stage::Solve);
-        m_team->run([&](int member) { solveSubsteps(m_memberScratch[static_cast<size_t>(member)], substeps, false); });
-        solved = m_memberScratch;
+        m_team->run([&](int member) {
+            const size_t m = static_cast<size_t>(member);
+            solveInRuns(m_memberScratch[m], m_runScratch[m], substeps, false);
+        });
+        solved = m_runScratch;
+    } else if (!m_team || group.size() < kMinBodiesForTeam) {
+        solveInRuns(scratch, m_runScratch[0], substeps, true);
+        solved = std::span<SolveScratch>(m_runScratch.data(), 1);
+        m_profile.count(Counter::PartImbalance, m_runScratch[0].partImbalanceTotal);
     } else {
-        solveSubsteps(scratch, substeps, true);
+        solveSubsteps(scratch, substeps, true, true);
         m_profile.count(Counter::PartImbalance, scratch.partImbalance);
     }
     for (SolveScratch& part : solved) {
-        m_profile.count(Counter::IslandsCut, part.islandsCut);
-        const ContactSolverCounters& sc = part.solver.counters();
+        m_profile.count(Counter::IslandsCut, part.islandsCutTotal);
+        const ContactSolverCounters& sc = part.rows;
         m_solverCounters.normalRows += sc.normalRows;
         m_solverCounters.frictionRows += sc.frictionRows;
         m_solverCounters.restitutionRows += sc.restitutionRows;
+        part.rows = {};
+        part.islandsCutTotal = part.partImbalanceTotal = 0;
         for (ClampCounters& clamps : part.clamps) {
             m_state.clampCounters.linear += clamps.linear;
             m_state.clampCounters.angular += clamps.angular;
@@ -1189,15 +1202,79 @@ void World::SolveScratch::clearContacts() {
     held.clear();
 }
 
-void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) {
+void World::solveInRuns(const SolveScratch& from, SolveScratch& work, int substeps, bool timed) {
+    const std::vector<uint32_t>& bodies = from.bodies;
+    if (s_runBodies == 0) { // all at once
+        work.bodies.assign(bodies.begin(), bodies.end());
+        work.clearContacts();
+        work.activeContacts.assign(from.activeContacts.begin(), from.activeContacts.end());
+        solveSubsteps(work, substeps, false, timed);
+        return;
+    }
+    // Each island's bodies, then its run: islands go to runs in the order of their first bodies, a run closed once
+    // it holds kRunBodies bodies.
+    std::vector<uint32_t>& runOf = work.runOfIsland;
+    if (runOf.size() < m_state.size())
+        runOf.resize(m_state.size());
+    for (uint32_t i : bodies)
+        runOf[m_island[i]] = 0;
+    for (uint32_t i : bodies)
+        ++runOf[m_island[i]];
+    constexpr uint32_t kAssigned = 0x80000000u;
+    std::vector<uint32_t>& start = work.runStart;
+    start.assign(1, 0);
+    for (uint32_t i : bodies) {
+        uint32_t& entry = runOf[m_island[i]];
+        if (entry & kAssigned)
+            continue;
+        if (start.back() >= s_runBodies)
+            start.push_back(0);
+        start.back() += entry;
+        entry = kAssigned | static_cast<uint32_t>(start.size() - 1);
+    }
+    const size_t runs = start.size();
+    // start[r] holds run r's bodies: turned into where each run begins, and the runs' contacts counted likewise.
+    std::vector<uint32_t>& contactStart = work.runContactStart;
+    contactStart.assign(runs + 1, 0);
+    const auto runOfContact = [&](uint32_t slot) {
+        const ContactPair& c = m_contactPairs[slot];
+        return runOf[m_island[m_state.isMoving(c.bodyA) ? c.bodyA : c.bodyB]] & ~kAssigned;
+    };
+    for (uint32_t slot : from.activeContacts)
+        ++contactStart[runOfContact(slot) + 1];
+    start.insert(start.begin(), 0);
+    for (size_t r = 0; r < runs; ++r) {
+        start[r + 1] += start[r];
+        contactStart[r + 1] += contactStart[r];
+    }
+    // Each run's bodies and contacts in their order in `from`.
+    work.runBodies.resize(bodies.size());
+    work.runContacts.resize(from.activeContacts.size());
+    std::vector<uint32_t>& at = work.runCursor;
+    at.assign(start.begin(), start.end() - 1);
+    for (uint32_t i : bodies)
+        work.runBodies[at[runOf[m_island[i]] & ~kAssigned]++] = i;
+    at.assign(contactStart.begin(), contactStart.end() - 1);
+    for (uint32_t slot : from.activeContacts)
+        work.runContacts[at[runOfContact(slot)]++] = slot;
+    for (size_t r = 0; r < runs; ++r) {
+        work.bodies.assign(work.runBodies.begin() + start[r], work.runBodies.begin() + start[r + 1]);
+        work.clearContacts();
+        work.activeContacts.assign(work.runContacts.begin() + contactStart[r],
+                                   work.runContacts.begin() + contactStart[r + 1]);
+        solveSubsteps(work, substeps, false, timed);
+    }
+}
+
+void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, bool timed) {
     const Real dt = 1.0 / m_fps;
     const Real h = dt / substeps;
     const bool rotation = m_effects.effects.has(Effect::Rotation);
     const std::vector<uint32_t>& group = scratch.bodies;
-    // Islands shared out (!mayUseTeam) run on the team's members, whose caller times the whole solve: the stage
+    // Islands shared out run on the team's members, whose caller times the whole solve (timed is false): the stage
     // timers are not thread safe.
     std::optional<StageTimer> prepareTimer;
-    if (mayUseTeam)
+    if (timed)
         prepareTimer.emplace(m_profile, Stage::PrepareContacts);
 
     // A big group's set-up is shared out over the team: each body and each contact is set up alone, so the results
@@ -1342,9 +1419,9 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
         for (int m = 0; m < members; ++m)
             ownedStart[static_cast<size_t>(m) + 1] = ThreadTeam::share(0, group.size(), m, members).second;
     }
-    // The per-stage timers are not thread safe: for a team, or islands shared out (!mayUseTeam), the caller times the
+    // The per-stage timers are not thread safe: for a team, or islands shared out (!timed), the caller times the
     // whole solve.
-    const bool timed = members == 1 && mayUseTeam;
+    const bool timedStages = members == 1 && timed;
     std::optional<StageTimer> solveTimer;
     if (members > 1)
         solveTimer.emplace(m_profile, Stage::Solve);
@@ -1394,7 +1471,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
         std::optional<StageTimer> t;
         const auto timer = [&](Stage stage) {
             t.reset();
-            if (timed)
+            if (timedStages)
                 t.emplace(m_profile, stage);
         };
         // Whether dp and dR changed since the last sweep: the first sweep after a position phase takes the points'
@@ -1483,19 +1560,25 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam) 
 
     if (m_solverSettings.restitution) {
         std::optional<StageTimer> t;
-        if (mayUseTeam)
+        if (timed)
             t.emplace(m_profile, Stage::Restitution);
         toSolver(allLocal);
         solver.applyRestitution(bodies);
         fromSolver(allLocal);
     }
     std::optional<StageTimer> storeTimer;
-    if (mayUseTeam)
+    if (timed)
         storeTimer.emplace(m_profile, Stage::StoreImpulses);
     local.scatterMotion(m_state, group);
     solver.storeImpulses(scratch.manifolds, parallelFor);
     for (uint32_t i : group)
         m_solverIndex[i] = 0;
+    const ContactSolverCounters& sc = solver.counters();
+    scratch.rows.normalRows += sc.normalRows;
+    scratch.rows.frictionRows += sc.frictionRows;
+    scratch.rows.restitutionRows += sc.restitutionRows;
+    scratch.islandsCutTotal += scratch.islandsCut;
+    scratch.partImbalanceTotal += scratch.partImbalance;
 }
 
 void World::continuousCollision() {

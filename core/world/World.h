@@ -133,6 +133,10 @@ public:
     // Advances one frame (1/fps) in `substeps` substeps.
     void step();
 
+    // For tests, which compare the two: the islands a thread solves go through the substeps in runs of whole islands
+    // of about this many bodies (kRunBodies by default); 0 solves them all at once. Set it while no world steps.
+    static void setIslandRunBodies(size_t bodies) { s_runBodies = bodies; }
+
     size_t bodyCount() const { return m_names.size(); }
     const std::string& name(size_t i) const { return m_names[i]; }
     bool isAnchor(size_t i) const { return m_state.isStatic(static_cast<uint32_t>(i)); }
@@ -261,11 +265,23 @@ private:
         };
         std::array<AxisCut, 3> axisCuts;
         std::vector<uint32_t> islandOf; // per root of a cut island: its entry in cutIslands
+        // What the solves of this scratch counted since solveGroup() last took it: rows and islands cut.
+        ContactSolverCounters rows;
+        size_t islandsCutTotal = 0, partImbalanceTotal = 0;
+        // solveInRuns(): per island root (entries of the roots of its islands only), the island's bodies, then its
+        // run; the bodies and contacts of each run, run after run (runStart, runContactStart: where each begins).
+        std::vector<uint32_t> runOfIsland;
+        std::vector<uint32_t> runBodies, runContacts, runStart, runContactStart, runCursor;
         void clearContacts();
     };
     // The group of `scratch` through `substeps` substeps, then restitution; on the team when mayUseTeam is set and
-    // the group is large enough, else on the calling thread.
-    void solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam);
+    // the group is large enough, else on the calling thread. `timed`: the stages are timed (the calling thread
+    // alone, so the timers are safe).
+    void solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, bool timed);
+    // The islands of `from` (its bodies and contacts) through `substeps` substeps on the calling thread, in runs of
+    // whole islands of about kRunBodies bodies, one run after the other, in `work` (whose rows, islands cut and
+    // clamps add up over the runs). Islands are independent, so the results are those of one solve of them all.
+    void solveInRuns(const SolveScratch& from, SolveScratch& work, int substeps, bool timed);
     // Shares m_scratch's islands out among the team's members (m_memberScratch) if that is worth it.
     bool splitByIslands();
     // Plans, for the whole group (m_scratch.bodies), how many bodies of each island to cut go to part 0
@@ -286,6 +302,14 @@ private:
     // per level of the solver's schedule on average (ramps.obj's pile: 37; the 5,050-cube pyramid: 25).
     static constexpr size_t kMinBodiesForTeam = 128;
     static constexpr size_t kMinLevelWidth = 16;
+    // solveInRuns(): islands are solved in runs of about this many bodies (an island bigger than that alone), so
+    // that a run's bodies, constraints and points stay in the core's cache (2 MB of L2 here) through its substeps.
+    // The scaling series' 16,000 cubes in pairs (`bench --scaling`, one thread, two runs of each, 2026-11-29): the
+    // solve stage over 60 frames took 2,046-2,433 ms with all islands at once, 1,330-1,772 ms in runs of 2,048
+    // bodies, 1,579-1,605 of 1,024, 1,569-1,597 of 512. Runs of 512 cut ramps.obj's 642 cubes in two and its
+    // prepare_contacts took 87-98 ms over 120 frames against 74-84; with 1,024 it is one run, as before.
+    static constexpr size_t kRunBodies = 1024;
+    static size_t s_runBodies; // setIslandRunBodies()
     // A body's principal moments within this fraction of the largest are taken as equal (create()).
     static constexpr Real kIsotropicSpread = 1e-5;
     int substepRefinement(Real massRatio) const;
@@ -390,6 +414,7 @@ private:
     static constexpr size_t kNarrowChunk = 128; // pairs per claim of the narrowphase's team
     SolveScratch m_scratch;
     std::vector<SolveScratch> m_memberScratch; // islands shared out: one part per member of the team
+    std::vector<SolveScratch> m_runScratch;    // per member: the runs of islands it solves (solveInRuns())
     size_t m_groupBodies = 0;                  // moving bodies of the group being solved (solveGroup())
     static constexpr uint32_t kNoMember = 0xffffffffu;
     std::vector<uint32_t> m_islandMember; // per island root: the member that solves it (splitByIslands())

@@ -383,6 +383,34 @@ private slots:
         QCOMPARE(hashes[0], hashes[1]);
     }
 
+    // A thread solves its islands in runs of whole islands (World::solveInRuns()), one run after the other through
+    // the substeps: scale1k's 1,000 cubes (471 stacked in pairs, 58 alone) give the frames of one solve of them all,
+    // in runs of 100 bodies or of the default size, on one thread and on two.
+    void islandsSolvedInRunsGiveTheFramesOfOneSolve() {
+        const Scene scene = *scenes::byName("scale1k");
+        uint64_t hashes[6];
+        uint64_t prepares[6];
+        const size_t runBodies[3] = {0, 100, 1024};
+        for (int run = 0; run < 6; ++run) {
+            World::setIslandRunBodies(runBodies[run / 2]);
+            WorldOptions options;
+            options.threads = run % 2 + 1;
+            World w = makeWorld(scene, options);
+            for (int i = 0; i < 40; ++i)
+                w.step();
+            hashes[run] = hashState(w);
+            prepares[run] = w.profile().calls[static_cast<int>(Stage::PrepareContacts)];
+            QVERIFY(w.diagnostics().contactPoints > 1000);
+        }
+        World::setIslandRunBodies(1024);
+        qInfo("solver set-ups on one thread over 40 steps: %llu at once, %llu in runs of 100 bodies",
+              static_cast<unsigned long long>(prepares[0]), static_cast<unsigned long long>(prepares[2]));
+        for (int run = 1; run < 6; ++run)
+            QCOMPARE(hashes[run], hashes[0]);
+        QCOMPARE(prepares[0], uint64_t(40));
+        QVERIFY(prepares[2] >= 40 * 9); // 1,000 bodies in runs of at least 100
+    }
+
     // One pile of 400 boxes is one island. It is cut in two parts for the solver on one thread and on two
     // (World::cutIslands()), and the two threads each sweep a part; while the falling boxes are in smaller islands,
     // the threads split each level of the solver's schedule or share the islands out.

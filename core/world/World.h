@@ -265,7 +265,7 @@ private:
         };
         std::array<AxisCut, 3> axisCuts;
         std::vector<uint32_t> islandOf; // per root of a cut island: its entry in cutIslands
-        // What the solves of this scratch counted since solveGroup() last took it: rows and islands cut.
+        // What the solves of this scratch counted since solveGroup() last took it: rows, islands cut, part imbalance.
         ContactSolverCounters rows;
         size_t islandsCutTotal = 0, partImbalanceTotal = 0;
         // solveInRuns(): per island root (entries of the roots of its islands only), the island's bodies, then its

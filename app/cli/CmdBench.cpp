@@ -15,7 +15,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <optional>
 #include <string>
@@ -187,24 +186,15 @@ bool runWorld(World& world, int frames, const QString& label, bool quiet, FrameT
                     Stage::Solve, Stage::IntegratePositions, Stage::Relax, Stage::Restitution, Stage::StoreImpulses});
     out.otherMs = groupMs(p, {Stage::Ccd, Stage::Sleep, Stage::StoreFrame});
 
-    uint64_t hash = 1469598103934665603ull;
-    const auto mix = [&](double value) {
-        uint64_t bits = 0;
-        std::memcpy(&bits, &value, sizeof bits);
-        hash = (hash ^ bits) * 1099511628211ull;
-    };
     for (size_t i = 0; i < world.bodyCount(); ++i) {
         const Vec3 c = world.centerOfMass(i);
-        const Quat q = world.shapeOrientation(i);
-        for (double value : {c.x, c.y, c.z, q.w, q.x, q.y, q.z})
-            mix(value);
         if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
             printError(label + ": '" + QString::fromStdString(world.name(i)) +
                        "': the simulation produced a non-finite position");
             return false;
         }
     }
-    out.stateHash = hash;
+    out.stateHash = world.stateHash();
     return true;
 }
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <optional>
 
@@ -1789,6 +1790,22 @@ void World::updateSleep() {
         m_state.linearVelocity[i] = Vec3(0.0);
         m_state.angularVelocity[i] = Vec3(0.0);
     }
+}
+
+uint64_t World::stateHash() const {
+    uint64_t hash = 1469598103934665603ull;
+    const auto mix = [&](Real value) {
+        uint64_t bits = 0;
+        std::memcpy(&bits, &value, sizeof bits);
+        hash = (hash ^ bits) * 1099511628211ull;
+    };
+    for (size_t i = 0; i < bodyCount(); ++i) {
+        const Vec3 c = centerOfMass(i);
+        const Quat q = shapeOrientation(i);
+        for (const Real value : {c.x, c.y, c.z, q.w, q.x, q.y, q.z})
+            mix(value);
+    }
+    return hash;
 }
 
 FrameDiagnostics World::diagnostics() const {

@@ -10,7 +10,6 @@
 #include <QTest>
 
 #include <cmath>
-#include <cstring>
 
 using namespace rl;
 
@@ -41,21 +40,6 @@ World makeWorld(const Scene& scene, const WorldOptions& options = {}) {
     return std::move(w).value();
 }
 
-uint64_t hashState(const World& w) {
-    uint64_t h = 1469598103934665603ull;
-    auto mix = [&](double d) {
-        uint64_t bits;
-        std::memcpy(&bits, &d, sizeof bits);
-        h = (h ^ bits) * 1099511628211ull;
-    };
-    for (size_t i = 0; i < w.bodyCount(); ++i) {
-        const Vec3 p = w.centerOfMass(i);
-        const Quat q = w.shapeOrientation(i);
-        mix(p.x), mix(p.y), mix(p.z), mix(q.w), mix(q.x), mix(q.y), mix(q.z);
-    }
-    return h;
-}
-
 // A scene stepped with every body kept awake on `threads` threads: its state hash and the counters of the cuts.
 struct CutRun {
     uint64_t hash = 0, cuts = 0, inParts = 0, imbalance = 0;
@@ -69,7 +53,7 @@ CutRun runAwake(const Scene& scene, int threads, int steps) {
     for (int i = 0; i < steps; ++i)
         w.step();
     CutRun run;
-    run.hash = hashState(w);
+    run.hash = w.stateHash();
     run.cuts = w.profile().counter(Counter::IslandsCut);
     run.inParts = w.profile().counter(Counter::SolvedInParts);
     run.imbalance = w.profile().counter(Counter::PartImbalance);
@@ -314,6 +298,27 @@ private slots:
         }
     }
 
+    // The determinism tests compare runs by their hashes, so a hash that told states apart poorly would let them pass
+    // for nothing: two worlds of one scene agree, one step apart they differ, and so do two states that differ in one
+    // body's position by its last bit or in its orientation alone.
+    void stateHashTellsStatesApart() {
+        Scene s = floorScene();
+        s.bodies.push_back(box("Cube", Vec3(0.5), Vec3(0, 2, 0)));
+        s.bodies.push_back(box("Tilted", Vec3(0.5), Vec3(3, 2, 0)));
+        s.bodies[2].orientation = glm::angleAxis(0.3, Vec3(0, 0, 1));
+        Scene shifted = s, turned = s;
+        shifted.bodies[1].position.x = std::nextafter(0.0, 1.0);
+        turned.bodies[2].orientation = glm::angleAxis(0.3 + 1e-9, Vec3(0, 0, 1));
+        World a = makeWorld(s), b = makeWorld(s);
+        QCOMPARE(a.stateHash(), b.stateHash());
+        QVERIFY(a.stateHash() != makeWorld(shifted).stateHash());
+        QVERIFY(a.stateHash() != makeWorld(turned).stateHash());
+        a.step();
+        QVERIFY(a.stateHash() != b.stateHash());
+        b.step();
+        QCOMPARE(a.stateHash(), b.stateHash());
+    }
+
     void deterministicAcrossRunsAndThreads() {
         Result<Scene> s = importScene(RL_SOURCE_DIR "/resources/scenes/pyramid.obj");
         QVERIFY(s.ok());
@@ -324,7 +329,7 @@ private slots:
             World w = makeWorld(*s, options);
             for (int i = 0; i < 120; ++i)
                 w.step();
-            hashes[run] = hashState(w);
+            hashes[run] = w.stateHash();
         }
         QCOMPARE(hashes[0], hashes[1]);
         QCOMPARE(hashes[0], hashes[2]);
@@ -346,7 +351,7 @@ private slots:
                 w.step();
                 awakeFrames[run] += w.diagnostics().awakeBodies;
             }
-            hashes[run] = hashState(w);
+            hashes[run] = w.stateHash();
             awake[run] = w.diagnostics().awakeBodies;
         }
         qInfo("awake after 120 frames: %d of 642", awake[0]);
@@ -373,7 +378,7 @@ private slots:
                 w.step();
                 contacts = std::max(contacts, w.diagnostics().contactPoints);
             }
-            hashes[run] = hashState(w);
+            hashes[run] = w.stateHash();
         }
         ContactSolver::setKeepSeparations(true);
         qInfo("most contact points in a frame: %d", contacts);
@@ -396,7 +401,7 @@ private slots:
             World w = makeWorld(scene, options);
             for (int i = 0; i < 25; ++i)
                 w.step();
-            hashes[run] = hashState(w);
+            hashes[run] = w.stateHash();
             prepares[run] = w.profile().calls[static_cast<int>(Stage::PrepareContacts)];
             QVERIFY(w.diagnostics().contactPoints > 1000);
         }
@@ -421,7 +426,7 @@ private slots:
             for (int i = 0; i < 150; ++i)
                 w.step();
             QVERIFY(w.diagnostics().awakeBodies > 256); // still one big awake pile
-            hashes[run] = hashState(w);
+            hashes[run] = w.stateHash();
             cut[run] = w.profile().counter(Counter::IslandsCut);
             inParts[run] = w.profile().counter(Counter::SolvedInParts);
         }
@@ -513,7 +518,7 @@ private slots:
                 w.step();
             QVERIFY(w.diagnostics().awakeBodies > 128); // big enough for the team
             QCOMPARE(w.effects().has(Effect::Restitution), restitution > 0.0);
-            hashes[run] = hashState(w);
+            hashes[run] = w.stateHash();
             bounces[run] = w.profile().counter(Counter::RestitutionRows);
             if (run == 1) {
                 // Some steps solve one big island on the whole team (the set-up shared out), others share smaller
@@ -556,7 +561,7 @@ private slots:
             World w = makeWorld(s, options);
             for (int i = 0; i < 90; ++i)
                 w.step();
-            hashes[run] = hashState(w);
+            hashes[run] = w.stateHash();
             rows[run] = w.profile().counter(Counter::NormalRows);
             integrated[run] = w.profile().counter(Counter::IntegratedBodies);
             shared[run] = w.profile().counter(Counter::IslandsSharedOut);
@@ -590,7 +595,7 @@ private slots:
             World w = makeWorld(s, options);
             for (int i = 0; i < 20; ++i)
                 w.step();
-            hashes[run] = hashState(w);
+            hashes[run] = w.stateHash();
             swept[run] = w.profile().counter(Counter::CcdBodies);
             hits[run] = w.profile().counter(Counter::CcdHits);
             pairs[run] = w.profile().counter(Counter::Pairs);

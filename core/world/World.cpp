@@ -193,6 +193,10 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
     w.m_effects = decideEffects(scene, options.effects.value_or(ws.effects), facts);
     const ActiveEffects& fx = w.m_effects.effects;
     w.m_gravity = fx.has(Effect::Gravity) ? g : Vec3(0.0);
+    // Without rotation a body neither turns nor spins: a spin the scene gives it would never act, and the frames and
+    // exports would report an angular velocity the body does not have.
+    if (!fx.has(Effect::Rotation))
+        std::fill(w.m_state.angularVelocity.begin(), w.m_state.angularVelocity.end(), Vec3(0.0));
     if (fx.has(Effect::Damping))
         w.m_damping = Damping{ws.linearDamping, ws.angularDamping};
     w.m_solverSettings.contactHertz = 0.25 * w.m_fps * w.m_substeps;

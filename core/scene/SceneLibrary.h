@@ -35,8 +35,8 @@ Scene shotAtStandingWall(Real offset, Real speed = 100.0);
 Scene headOnShots(Real offset, Real speed = 100.0);
 Scene scalingGrid(int count); // `count` cubes on a floor in a grid, some resting, some falling
 
-// Names for rigidlab-cli bench: "stack20", "pyramid20", "large_pyramid" (base 100), "pyramid90" (base 90, the wall of
-// Box3D's benchmark of that name), "boxes1000", "scale1k", "scale4k", "scale16k" ... (see names()).
+// Names for rigidlab-cli bench: "stack20", "pyramid20", "large_pyramid" (base 100), "pyramid90" (base 90, the wall that
+// Box3D's own large_pyramid benchmark steps), "boxes1000", "scale1k", "scale4k", "scale16k" ... (see names()).
 std::vector<std::string> names();
 std::optional<Scene> byName(std::string_view name);
 

@@ -177,9 +177,9 @@ public:
     const ClampCounters& clampCounters() const { return m_state.clampCounters; }
 
     FrameDiagnostics diagnostics() const;
-    // FNV-1a over the bits of every body's centre of mass and shape orientation: two runs end in the same state, bit
-    // for bit, exactly when their hashes agree (up to a collision). The determinism tests and the benchmarks compare
-    // runs by it.
+    // FNV-1a over the bits of every body's centre of mass and shape orientation: runs that end in the same state, bit
+    // for bit, have the same hash, and runs that do not almost surely differ. The determinism tests and the
+    // benchmarks compare runs by it.
     uint64_t stateHash() const;
     // The current manifolds (touching or speculative), for overlays and tests.
     std::vector<Manifold> manifolds() const;

@@ -154,10 +154,11 @@ private slots:
     void forcedModesOverrideAuto() {
         QFETCH(QString, setting);
         QFETCH(QString, expected);
-        const World w = makeWorld(boxOnFloor(), parsed(qPrintable(setting)));
+        const EffectsSetting modes = parsed(qPrintable(setting));
+        const World w = makeWorld(boxOnFloor(), modes);
         QCOMPARE(QString::fromStdString(w.effects().toString()), expected);
         for (int e = 0; e < kEffectCount; ++e) {
-            const EffectMode mode = parsed(qPrintable(setting)).mode(static_cast<Effect>(e));
+            const EffectMode mode = modes.mode(static_cast<Effect>(e));
             const std::string& reason = w.effectsDecision().reasons[static_cast<size_t>(e)];
             if (mode == EffectMode::On)
                 QCOMPARE(reason, std::string("forced on"));

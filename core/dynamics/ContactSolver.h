@@ -152,8 +152,9 @@ public:
     //
     // bodyPart, if given, puts each solver body in part 0 or 1 (entry 0, the static one, is in none). The constraints
     // are then swept in three segments: those within part 0, those within part 1, and the boundary (a constraint
-    // between a body of each part), each segment in manifold order. The two parts share no moving body, so two
-    // threads can sweep them at once with no barrier between levels (segmentLevelBegin()).
+    // between a body of each part), the parts in manifold order, the boundary in an order of colours (see
+    // scheduleLevels()). The two parts share no moving body, so two threads can sweep them at once with no barrier
+    // between levels (segmentLevelBegin()).
     //
     // held, if given, holds one side of each manifold for its constraint (Hold: side kHoldA or kHoldB, else 0). A side
     // held with scale 0 is read but the constraint's impulses do not move it, as if it were infinitely heavy, so the
@@ -186,7 +187,7 @@ public:
     // constraints of one level share no moving body, so they are packed into batches of laneWidth() lanes
     // (ContactSolverWide.cpp) whose lanes run side by side in vector registers, eight doubles in an AVX-512 register
     // where the CPU has it (x86-64-v4), else four. Every body still receives the same updates in the same order as in
-    // the sequential sweep in manifold order, segment by segment (warmStartSequential(), solveSequential()), so the
+    // the sequential sweep, segment by segment (warmStartSequential(), solveSequential(); see prepare()), so the
     // results are the same numbers, whatever the width and the order of the batches within a level.
     //
     // The same, split up for several threads: batches begin..end within one level may run on different threads at
@@ -213,7 +214,7 @@ public:
                          Motion motion = Motion::Moved);
     void countSweep();
 
-    // The reference: one constraint after the other in manifold order (segment by segment), with scalar arithmetic.
+    // The reference: one constraint after the other, segment by segment (forEachInSequence()), with scalar arithmetic.
     // Tests compare the batched sweeps with it. Use one kind of sweep per prepare(), not both.
     void warmStartSequential(std::span<SolverBody> bodies);
     void solveSequential(std::span<SolverBody> bodies, bool useBias);
@@ -398,6 +399,10 @@ private:
     bool hasRecord(size_t i) const { return m_kept || (m_bounceOnly && m_bouncing[i] != 0); }
     void scheduleLevels(size_t bodyCount, std::span<const uint8_t> bodyPart, std::span<const uint32_t> bodyA,
                         std::span<const uint32_t> bodyB);
+    // Calls visit(constraint index) in the order of the sequential sweeps: the parts' constraints in manifold order,
+    // then the boundary's level by level.
+    template <class Visit>
+    void forEachInSequence(Visit&& visit) const;
     void warmStartOne(std::span<SolverBody> bodies, const ContactConstraint& c);
     void solveOne(std::span<SolverBody> bodies, ContactConstraint& c, bool useBias);
 

@@ -7,6 +7,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <random>
@@ -238,16 +239,34 @@ private slots:
         QTest::newRow("2000 random contacts among 1000 bodies") << 1000 << 2000 << false << false;
         QTest::newRow("tower of 40 in two parts") << 40 << 40 << true << true;
         QTest::newRow("2000 random contacts among 1000 bodies in two parts") << 1000 << 2000 << false << true;
+        // Every other body of a chain in part 1: each constraint but the first crosses the cut and shares a body
+        // with the next one, as along the seam of a cut through a wall of bricks.
+        QTest::newRow("a seam of 40 contacts across the cut") << 41 << 40 << true << true;
+        // One body in part 0 touching 70 of part 1: more constraints on one body than there are colours.
+        QTest::newRow("70 contacts across the cut on one body") << 71 << 70 << true << true;
     }
-    // With parts, the sequential order is part 0's constraints, part 1's, then the boundary's, each in manifold order,
-    // and each segment is a run of whole levels.
+    // With parts, the sequential order is part 0's constraints, part 1's, each in manifold order, then the
+    // boundary's by colour, and each segment is a run of whole levels.
     void levelsKeepTheSequentialOrder() {
         QFETCH(int, bodies);
         QFETCH(int, constraints);
         QFETCH(bool, chain);
         QFETCH(bool, parts);
-        const Problem p = makeProblem(bodies, constraints, chain, 7);
-        const std::vector<uint8_t> part = halves(static_cast<size_t>(bodies));
+        const QByteArray row = QTest::currentDataTag();
+        const bool seam = row.startsWith("a seam"), star = row.startsWith("70 contacts");
+        Problem p = makeProblem(bodies, constraints, chain, 7);
+        std::vector<uint8_t> part = halves(static_cast<size_t>(bodies));
+        if (seam)
+            for (size_t i = 1; i < part.size(); ++i)
+                part[i] = static_cast<uint8_t>(i % 2);
+        if (star) {
+            std::fill(part.begin() + 1, part.end(), uint8_t(1));
+            part[1] = 0;
+            for (int k = 0; k < constraints; ++k) {
+                p.indexA[static_cast<size_t>(k)] = 1;
+                p.indexB[static_cast<size_t>(k)] = static_cast<uint32_t>(k + 2);
+            }
+        }
         ContactSolver solver;
         prepare(solver, p, parts ? std::span<const uint8_t>(part) : std::span<const uint8_t>());
         const auto segment = [&](int c) { return parts ? segmentOf(p, part, static_cast<size_t>(c)) : size_t(0); };
@@ -268,16 +287,35 @@ private slots:
                 }
             }
         }
-        // Constraints that share a moving body are solved in segment order, then manifold order.
-        for (int i = 0; i < constraints; ++i)
-            for (int j = i + 1; j < constraints; ++j) {
+        // Constraints that share a moving body are solved in segment order, then within a part in manifold order.
+        // In the boundary each constraint, in manifold order, takes the lowest of its levels (colours) that no earlier
+        // one sharing a body holds; past 64 colours, one level more than the last such constraint's.
+        constexpr size_t kBoundary = ContactSolver::kBoundarySegment;
+        const int boundaryStart = static_cast<int>(solver.segmentLevelBegin(kBoundary));
+        for (int j = 0; j < constraints; ++j) {
+            std::vector<int> takenBefore; // the boundary levels of the earlier constraints that share a body with j
+            for (int i = 0; i < j; ++i) {
                 const bool share = (p.indexA[i] != 0 && (p.indexA[i] == p.indexA[j] || p.indexA[i] == p.indexB[j])) ||
                                    (p.indexB[i] != 0 && (p.indexB[i] == p.indexA[j] || p.indexB[i] == p.indexB[j]));
-                if (share && segment(i) == segment(j))
-                    QVERIFY(levelOf[i] < levelOf[j]);
-                else if (share)
+                if (!share)
+                    continue;
+                if (segment(i) != segment(j))
                     QCOMPARE(levelOf[i] < levelOf[j], segment(i) < segment(j));
+                else if (segment(j) != kBoundary)
+                    QVERIFY(levelOf[i] < levelOf[j]);
+                else
+                    takenBefore.push_back(levelOf[i] - boundaryStart);
             }
+            if (segment(j) != kBoundary)
+                continue;
+            int expected = 0;
+            while (expected < 64 && std::find(takenBefore.begin(), takenBefore.end(), expected) != takenBefore.end())
+                ++expected;
+            if (expected == 64)
+                for (int level : takenBefore)
+                    expected = std::max(expected, level + 1);
+            QCOMPARE(levelOf[j] - boundaryStart, expected);
+        }
         // Each segment is a run of whole levels, in order.
         size_t counts[ContactSolver::kBoundarySegment + 1] = {};
         for (int c = 0; c < constraints; ++c) {
@@ -288,10 +326,15 @@ private slots:
         }
         QCOMPARE(solver.segmentLevelBegin(0), size_t(0));
         QCOMPARE(solver.segmentLevelBegin(ContactSolver::kBoundarySegment + 1), solver.levelCount());
-        if (parts)
+        if (parts && !seam && !star)
             QVERIFY(counts[0] > 0 && counts[1] > 0 && counts[ContactSolver::kBoundarySegment] > 0);
         if (chain && !parts)
             QCOMPARE(solver.levelCount(), size_t(constraints)); // a tower has no two independent contacts
+        const size_t boundaryLevels = solver.levelCount() - solver.segmentLevelBegin(kBoundary);
+        if (seam)
+            QCOMPARE(boundaryLevels, size_t(2)); // 39 levels in manifold order
+        if (star)
+            QCOMPARE(boundaryLevels, size_t(constraints)); // one body: one constraint a level
         qInfo("%d constraints in %zu levels; segments %zu, %zu and %zu", constraints, solver.levelCount(), counts[0],
               counts[1], counts[2]);
     }

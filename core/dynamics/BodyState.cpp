@@ -57,8 +57,9 @@ void gatherInto(std::vector<T>& to, const std::vector<T>& from, std::span<const 
 }
 
 template <class T>
-void scatterFrom(const std::vector<T>& from, std::vector<T>& to, std::span<const uint32_t> ids) {
-    for (size_t k = 0; k < ids.size(); ++k)
+void scatterFrom(const std::vector<T>& from, std::vector<T>& to, std::span<const uint32_t> ids, size_t first,
+                 size_t last) {
+    for (size_t k = first; k < last; ++k)
         to[ids[k]] = from[k];
 }
 
@@ -101,10 +102,14 @@ void BodyState::gatherRange(const BodyState& from, std::span<const uint32_t> ids
 }
 
 void BodyState::scatterMotion(BodyState& to, std::span<const uint32_t> ids) const {
-    scatterFrom(position, to.position, ids);
-    scatterFrom(orientation, to.orientation, ids);
-    scatterFrom(linearVelocity, to.linearVelocity, ids);
-    scatterFrom(angularVelocity, to.angularVelocity, ids);
+    scatterMotionRange(to, ids, 0, ids.size());
+}
+
+void BodyState::scatterMotionRange(BodyState& to, std::span<const uint32_t> ids, size_t first, size_t last) const {
+    scatterFrom(position, to.position, ids, first, last);
+    scatterFrom(orientation, to.orientation, ids, first, last);
+    scatterFrom(linearVelocity, to.linearVelocity, ids, first, last);
+    scatterFrom(angularVelocity, to.angularVelocity, ids, first, last);
 }
 
 Result<uint32_t> BodyState::addBody(const BodyInit& init) {

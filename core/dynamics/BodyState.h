@@ -108,6 +108,8 @@ struct BodyState {
     // Writes the motion (position, orientation and velocities) of bodies 0 .. ids.size() - 1 back to `to`'s bodies
     // ids: the inverse of gather() for what a step changes.
     void scatterMotion(BodyState& to, std::span<const uint32_t> ids) const;
+    // The same for bodies first .. last - 1 only: threads may write disjoint ranges at once.
+    void scatterMotionRange(BodyState& to, std::span<const uint32_t> ids, size_t first, size_t last) const;
 
     // Validates the definition (finite numbers, positive mass, positive-definite inertia satisfying the triangle
     // inequality); bad input is an Error and leaves the state unchanged. Returns the new body's index.

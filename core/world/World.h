@@ -230,6 +230,7 @@ private:
     void findAndCollidePairs();
     void buildIslands();
     void solve();
+    void countSolverRows(); // the solver's rows of this step into the profile
     void solveGroup(std::span<const uint32_t> group, int refinement);
     // The solver and scratch of the group being solved.
     struct SolveScratch {
@@ -399,7 +400,11 @@ private:
     // (anchor or sleeper), 1 when it touches one; 0 elsewhere or with no path (see World::heightsAboveSupport()).
     std::vector<uint32_t> m_height;
     bool m_anyHeight = false;
+    // This step: no two moving bodies far enough apart in mass for any island to take finer substeps (solve()); then
+    // m_refinement is not filled and every moving body is in the one group.
+    bool m_uniformRefinement = true;
     std::vector<uint32_t> m_solverIndex, m_moving;
+    std::vector<uint32_t> m_activeIsland; // per contact of m_scratch.activeContacts: its island (solveGroup())
     // Per member of the team in findAndCollidePairs(): its touching contacts, the pairs whose contact may wake a
     // sleeper (their index in the pair list), and its counts.
     struct NarrowTest {

@@ -1063,7 +1063,7 @@ void World::planCuts() {
         m_cutShare[root] = evenShare(m_cutShare[root], load);
 }
 
-void World::cutIslands(SolveScratch& scratch) const {
+void World::cutIslands(SolveScratch& scratch, const ContactSolver::ParallelFor& parallelFor) const {
     // Runs on a member of the team when islands are shared out, so it touches only the scratch and reads the state.
     const std::vector<uint32_t>& group = scratch.bodies;
     std::vector<uint8_t>& part = scratch.part;
@@ -1116,7 +1116,9 @@ void World::cutIslands(SolveScratch& scratch) const {
     // across are counted; the best axis's split is then copied, not made again. (Comparing coordinates read through
     // the group and splitting the best axis a second time, cutting the 5,050-cube pyramid took 240 us a step, now
     // 139 us: medians of its first 45 frames, one thread, 2026-11-27. Shared out over two threads, the three axes
-    // took no less: 136-148 us.)
+    // took no less then, 136-148 us. With the team's members spinning between jobs (ThreadTeam), shared out, the
+    // whole cut took 0.19-0.21 ms a step of its first 45 frames on two threads against 0.22-0.28, three runs each,
+    // 2026-12-01: the member with two axes takes 0.10-0.12 ms of it.)
     const auto tryAxis = [&](int axis) {
         SolveScratch::AxisCut& at = scratch.axisCuts[static_cast<size_t>(axis)];
         at.keys.resize(cutBodies.size());
@@ -1139,8 +1141,10 @@ void World::cutIslands(SolveScratch& scratch) const {
                 ++at.boundary[islandOf[m_island[group[a - 1]]]];
         }
     };
-    for (int axis = 0; axis < 3; ++axis)
-        tryAxis(axis);
+    shareOut(parallelFor, 3, [&](size_t first, size_t last) {
+        for (size_t axis = first; axis < last; ++axis)
+            tryAxis(static_cast<int>(axis));
+    });
     for (int axis = 0; axis < 3; ++axis)
         for (size_t n = 0; n < islands.size(); ++n)
             if (scratch.axisCuts[static_cast<size_t>(axis)].boundary[n] < islands[n].boundary) {
@@ -1341,7 +1345,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
             scratch.held[k] = m_anyHeight ? contactHold(slot) : ContactSolver::Hold{};
         }
     });
-    cutIslands(scratch);
+    cutIslands(scratch, parallelFor);
     numberByParts(scratch);
 
     // The substeps integrate a copy of the group's bodies (group[k] is local body k), written back after them; the

@@ -297,7 +297,8 @@ private:
     // Fills scratch.part for its bodies (solver indices and contacts set): each island of cutIslandBodies or more, or
     // of cutDominantIslandBodies or more that holds most of the group (m_groupBodies), is cut in two as planCuts()
     // planned; the other islands go whole to the part with fewer bodies, largest first.
-    void cutIslands(SolveScratch& scratch) const;
+    // parallelFor, if given, shares the three axes out.
+    void cutIslands(SolveScratch& scratch, const ContactSolver::ParallelFor& parallelFor = {}) const;
     // Whether an island of `bodies` moving bodies, in a group of m_groupBodies, is cut (cutIslands()).
     bool cutsIsland(size_t bodies) const;
     // After cutIslands(): numbers the group's bodies part by part (scratch.bodies, m_solverIndex, the contacts'

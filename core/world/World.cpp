@@ -399,7 +399,9 @@ void World::commitPairs() {
         // Slots of pairs that ended are reused by new pairs, last freed first, as one walk of the merged list freed
         // and took them before the merge was split from this: a new pair mostly takes the slot of a pair that ended
         // near it in pair order, the order every later stage visits the contacts in. (Freeing all of them before
-        // taking any hands them out in reverse; no difference in time was measured between the two.)
+        // taking any hands them out in reverse; no difference in time was measured between the two.) Only the slots are
+        // handed out here: the list job below starts each new contact (startContact()), each member an even part of
+        // them, just before it collides them.
         size_t freed = 0;
         for (size_t k = 0; k < m_newPairs.size(); ++k) {
             const size_t i = m_newPairs[k];
@@ -416,8 +418,6 @@ void World::commitPairs() {
                 m_freeContacts.pop_back();
                 m_contactTouching[slot] = 0;
             }
-            const auto [a, b] = m_nextPairBodies[i];
-            startContact(slot, a, b);
             m_nextPairContacts[i] = slot;
         }
         m_freeContacts.insert(m_freeContacts.end(), m_endedContacts.begin() + static_cast<std::ptrdiff_t>(freed),
@@ -656,20 +656,30 @@ void World::findAndCollidePairs() {
         commitPairs();
     }
 
-    // Then the new pairs are collided, and the touching contacts are listed once, in pair order: from here on only
-    // they matter. Each member takes an even part of the pair list. A contact that may wake a sleeper (below) has a
-    // body that is neither moving nor static.
+    // Then the new pairs are started and collided, each member taking an even part of them, and the touching
+    // contacts are listed once, in pair order, each member taking an even part of the pair list: from here on only
+    // they matter. A contact that may wake a sleeper (below) has a body that is neither moving nor static. (Started
+    // by member 0 alone in commitPairs(), the new contacts of ramps.obj took most of the 24-31 us a step that member
+    // 0 worked alone there, frames 40-120 on two threads, 2026-12-01. The new pairs gather at the end of the pair
+    // list, so each member takes an even part of them rather than those in its part of the list.)
     timer.emplace(m_profile, Stage::Narrowphase);
     const size_t pairCount = m_pairContacts.size();
     const int members = m_team && pairCount >= 2 * kNarrowChunk ? teamSize : 1;
     const auto list = [&](int member) {
         NarrowList& mine = m_narrowLists[static_cast<size_t>(member)];
-        const auto [begin, end] = ThreadTeam::share(0, pairCount, member, members);
         mine.tests.clear();
-        for (auto at = std::lower_bound(m_newPairs.begin(), m_newPairs.end(), begin);
-             at != m_newPairs.end() && *at < end; ++at)
-            filter(*at, mine.tests);
+        const auto [first, last] = ThreadTeam::share(0, m_newPairs.size(), member, members);
+        for (size_t k = first; k < last; ++k) {
+            const size_t i = m_newPairs[k];
+            const auto [a, b] = m_pairBodies[i];
+            startContact(m_pairContacts[i], a, b);
+            filter(i, mine.tests);
+        }
         mine.tested += collideTests(mine.tests);
+        // The listing reads the touching flags of the new contacts, which either member may have collided.
+        if (members > 1)
+            m_team->barrier();
+        const auto [begin, end] = ThreadTeam::share(0, pairCount, member, members);
         for (size_t i = begin; i < end; ++i) {
             const uint32_t slot = m_pairContacts[i];
             if (!m_contactTouching[slot])

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace rl {
@@ -24,6 +25,10 @@ public:
     void run(const std::function<void(int member)>& job);
     // Inside a job: returns once every member has called it; what each member wrote before is then visible to all.
     void barrier();
+
+    // Nanoseconds member 0 spent waiting for the others, at barriers and at the end of run(), since the last call;
+    // zero for a team of one. The world reads it to see whether the team pays (TeamPacer).
+    uint64_t takeLeaderWait() { return std::exchange(m_leaderWaitNs, 0); }
 
     // [begin, end) split evenly over the members: member k's part.
     static std::pair<size_t, size_t> share(size_t begin, size_t end, int member, int members) {
@@ -45,6 +50,8 @@ private:
     std::atomic<uint32_t> m_arrived{0};       // members at the current barrier
     std::atomic<uint32_t> m_barrierGeneration{0};
     std::atomic<bool> m_stop{false};
+    // Written by member 0 only, on a cache line of its own, away from the counters the other members spin on.
+    alignas(64) uint64_t m_leaderWaitNs = 0;
 };
 
 } // namespace rl

@@ -4,6 +4,7 @@
 
 #include <QTest>
 
+#include <chrono>
 #include <thread>
 
 using namespace rl;
@@ -51,6 +52,44 @@ private slots:
             }
         });
         QCOMPARE(wrong, std::vector<int>(2, 0));
+    }
+
+    // Member 0's waits for the others, at barriers and at the end of run(), are counted (the world's TeamPacer reads
+    // them); the others' waits are not, nor is the time member 0 spends in the job itself.
+    void countsMemberZerosWaits() {
+        using namespace std::chrono_literals;
+        ThreadTeam team(2);
+        QCOMPARE(team.takeLeaderWait(), uint64_t(0));
+        const auto ms = [](uint64_t ns) { return static_cast<double>(ns) * 1e-6; };
+        // Member 1 is late to a barrier by 30 ms and to the end of the job by 20 ms.
+        team.run([&](int member) {
+            if (member == 1)
+                std::this_thread::sleep_for(30ms);
+            team.barrier();
+            if (member == 1)
+                std::this_thread::sleep_for(20ms);
+        });
+        const double late = ms(team.takeLeaderWait());
+        qInfo("member 0 waited %.1f ms for a member 30 + 20 ms late", late);
+        QVERIFY(late >= 49.0);
+        QVERIFY(late < 1000.0);
+        QCOMPARE(team.takeLeaderWait(), uint64_t(0)); // taken
+        // Member 0 is the late one: it does not wait, member 1 does.
+        team.run([&](int member) {
+            if (member == 0)
+                std::this_thread::sleep_for(30ms);
+            team.barrier();
+        });
+        const double early = ms(team.takeLeaderWait());
+        qInfo("member 0 waited %.3f ms when it came last", early);
+        QVERIFY(early < 25.0);
+        // A team of one never waits.
+        ThreadTeam alone(1);
+        alone.run([&](int) {
+            alone.barrier();
+            std::this_thread::sleep_for(5ms);
+        });
+        QCOMPARE(alone.takeLeaderWait(), uint64_t(0));
     }
 
     void shareSplitsWithoutGapsOrOverlap() {

@@ -33,7 +33,8 @@ constexpr std::string_view kCounterNames[kCounterCount] = {"pairs",
                                                            "islands_shared_out",
                                                            "islands_cut",
                                                            "solved_in_parts",
-                                                           "part_imbalance"};
+                                                           "part_imbalance",
+                                                           "steps_alone"};
 } // namespace
 
 std::string_view stageName(Stage stage) {

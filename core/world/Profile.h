@@ -49,6 +49,7 @@ enum class Counter {
     SolvedInParts,    // solves in which each of two threads swept one part (World::solveSubsteps())
     PartImbalance,    // bodies by which the larger of the two parts outnumbers the other, summed over the solves of
                       // a whole group with an island cut (World::planCuts())
+    StepsAlone,       // steps a world with a team took on one thread, the team not paying (TeamPacer)
     Count
 };
 inline constexpr int kCounterCount = static_cast<int>(Counter::Count);

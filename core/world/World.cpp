@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <numeric>
@@ -76,8 +77,11 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
     w.m_substeps = options.substeps.value_or(ws.substeps);
     w.m_iterations = options.iterations.value_or(ws.iterations);
     w.m_integrator = options.integrator.value_or(ws.integrator);
-    if (const int threads = std::clamp(options.threads, 1, 64); threads > 1)
-        w.m_team = std::make_unique<ThreadTeam>(threads);
+    if (const int threads = std::clamp(options.threads, 1, 64); threads > 1) {
+        w.m_ownTeam = std::make_unique<ThreadTeam>(threads);
+        w.m_team = w.m_ownTeam.get();
+    }
+    w.m_teamPacing = options.teamPacing;
     auto settingsError = [&](std::string message) {
         Error e;
         e.file = scene.sourcePath;
@@ -246,6 +250,34 @@ Quat World::rotationSinceStart(size_t i) const {
 }
 
 void World::step() {
+    // The team or member 0 alone (TeamPacer): the same frames either way.
+    const auto start = std::chrono::steady_clock::now();
+    bool alone = false;
+    if (m_ownTeam) {
+        switch (m_teamPacing) {
+        case TeamPacing::Adaptive:
+            alone = !m_pacer.useTeam();
+            break;
+        case TeamPacing::Always:
+            break;
+        case TeamPacing::EveryOtherStep:
+            alone = m_frame % 2 == 1;
+            break;
+        }
+        m_team = alone ? nullptr : m_ownTeam.get();
+        m_ownTeam->takeLeaderWait(); // only this step's waits count
+    }
+    stepOnce();
+    if (m_ownTeam) {
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        m_pacer.record(seconds, 1e-9 * static_cast<double>(m_ownTeam->takeLeaderWait()));
+        m_team = m_ownTeam.get();
+        if (alone)
+            m_profile.count(Counter::StepsAlone, 1);
+    }
+}
+
+void World::stepOnce() {
     {
         StageTimer t(m_profile, Stage::UpdateBroadphase);
         refreshTransforms();

@@ -12,6 +12,7 @@
 #include "scene/Scene.h"
 #include "world/Effects.h"
 #include "world/Profile.h"
+#include "world/TeamPacer.h"
 #include "world/ThreadTeam.h"
 
 #include <memory>
@@ -30,6 +31,8 @@ struct WorldOptions {
     std::optional<Integrator> integrator;
     std::optional<EffectsSetting> effects;
     int threads = 1; // threads of the narrowphase and the contact solve; results are identical for any count
+    // With threads > 1: whether each step takes the team or member 0 alone (TeamPacer). The frames are the same.
+    TeamPacing teamPacing = TeamPacing::Adaptive;
 };
 
 // Tuning constants of the contact pipeline, with where they come from.
@@ -130,7 +133,7 @@ class World {
 public:
     static Result<World> create(const Scene& scene, const WorldOptions& options = {});
 
-    // Advances one frame (1/fps) in `substeps` substeps.
+    // Advances one frame (1/fps) in `substeps` substeps, on the team or alone (WorldOptions::teamPacing).
     void step();
 
     // For tests, which compare the two: the islands a thread solves go through the substeps in runs of whole islands
@@ -294,6 +297,7 @@ private:
     // is then split where the two parts come out even. Planned before islands are shared out among threads, so a
     // cut is the same for any number of threads.
     void planCuts();
+    void stepOnce(); // step() on m_team, or alone if it is null
     // Fills scratch.part for its bodies (solver indices and contacts set): each island of cutIslandBodies or more, or
     // of cutDominantIslandBodies or more that holds most of the group (m_groupBodies), is cut in two as planCuts()
     // planned; the other islands go whole to the part with fewer bodies, largest first.
@@ -340,8 +344,10 @@ private:
     Integrator m_integrator = Integrator::SymplecticEuler;
     Vec3 m_gravity{0.0};
     Damping m_damping;
-    // Threads of the narrowphase and the solve (WorldOptions::threads); none for one thread.
-    std::unique_ptr<ThreadTeam> m_team;
+    // Threads of the narrowphase and the solve (WorldOptions::threads); none for one thread. m_team is the team in a
+    // step that takes it, else null (TeamPacer decides): the step's code asks m_team alone.
+    std::unique_ptr<ThreadTeam> m_ownTeam;
+    ThreadTeam* m_team = nullptr;
     WorldTuning m_tuning;
     EffectsDecision m_effects;
     ContactSolverSettings m_solverSettings;
@@ -440,6 +446,8 @@ private:
 
     Profile m_profile;
     int64_t m_frame = 0;
+    TeamPacing m_teamPacing = TeamPacing::Adaptive;
+    TeamPacer m_pacer;
 };
 
 } // namespace rl

@@ -48,6 +48,7 @@ struct CutRun {
 CutRun runAwake(const Scene& scene, int threads, int steps) {
     WorldOptions options;
     options.threads = threads;
+    options.teamPacing = TeamPacing::Always; // every step on the team, even on a busy machine
     options.effects = EffectsSetting::parse("auto,-sleeping").value();
     World w = makeWorld(scene, options);
     for (int i = 0; i < steps; ++i)
@@ -326,6 +327,7 @@ private slots:
         for (int run = 0; run < 3; ++run) {
             WorldOptions options;
             options.threads = run == 2 ? 2 : 1;
+            options.teamPacing = TeamPacing::Always; // every step on the team, even on a busy machine
             World w = makeWorld(*s, options);
             for (int i = 0; i < 120; ++i)
                 w.step();
@@ -333,6 +335,40 @@ private slots:
         }
         QCOMPARE(hashes[0], hashes[1]);
         QCOMPARE(hashes[0], hashes[2]);
+    }
+
+    // A world with a team may take any step alone (TeamPacer, when the machine's other cores are busy): ramps.obj's
+    // 642 cubes on two threads, the team and alone by turns, and as the pacer chose, end where one thread does.
+    void teamAndAloneByTurnsGiveIdenticalResults_data() {
+        QTest::addColumn<int>("pacing");
+        QTest::addColumn<int>("alone"); // steps alone of 120, or -1: any
+        QTest::newRow("every other step alone") << int(TeamPacing::EveryOtherStep) << 60;
+        QTest::newRow("always the team") << int(TeamPacing::Always) << 0;
+        QTest::newRow("adaptive") << int(TeamPacing::Adaptive) << -1;
+    }
+    void teamAndAloneByTurnsGiveIdenticalResults() {
+        QFETCH(int, pacing);
+        QFETCH(int, alone);
+        Result<Scene> s = importScene(RL_SOURCE_DIR "/resources/scenes/ramps.obj");
+        QVERIFY(s.ok());
+        World one = makeWorld(*s);
+        WorldOptions options;
+        options.threads = 2;
+        options.teamPacing = static_cast<TeamPacing>(pacing);
+        World two = makeWorld(*s, options);
+        for (int i = 0; i < 120; ++i) {
+            one.step();
+            two.step();
+            if (i % 20 == 19)
+                QCOMPARE(two.stateHash(), one.stateHash());
+        }
+        QCOMPARE(one.profile().counter(Counter::StepsAlone), uint64_t(0));
+        const uint64_t stepsAlone = two.profile().counter(Counter::StepsAlone);
+        qInfo("steps alone: %llu of 120", static_cast<unsigned long long>(stepsAlone));
+        if (alone >= 0)
+            QCOMPARE(stepsAlone, uint64_t(alone));
+        if (pacing == int(TeamPacing::EveryOtherStep))
+            QVERIFY(two.profile().counter(Counter::IslandsSharedOut) > 0); // the team did solve
     }
 
     // ramps.obj's 642 cubes on two threads: the team also shares the sleep clocks out (World::updateSleep()), and
@@ -346,6 +382,7 @@ private slots:
         for (int run = 0; run < 2; ++run) {
             WorldOptions options;
             options.threads = run + 1;
+            options.teamPacing = TeamPacing::Always; // every step on the team, even on a busy machine
             World w = makeWorld(*s, options);
             for (int i = 0; i < 120; ++i) {
                 w.step();
@@ -373,6 +410,7 @@ private slots:
             ContactSolver::setKeepSeparations(run < 2);
             WorldOptions options;
             options.threads = run == 1 ? 2 : 1;
+            options.teamPacing = TeamPacing::Always; // every step on the team, even on a busy machine
             World w = makeWorld(*s, options);
             for (int i = 0; i < 60; ++i) {
                 w.step();
@@ -398,6 +436,7 @@ private slots:
             World::setIslandRunBodies(run == 0 ? 0 : 100);
             WorldOptions options;
             options.threads = run == 2 ? 2 : 1;
+            options.teamPacing = TeamPacing::Always; // every step on the team, even on a busy machine
             World w = makeWorld(scene, options);
             for (int i = 0; i < 25; ++i)
                 w.step();
@@ -422,6 +461,7 @@ private slots:
         for (int run = 0; run < 2; ++run) {
             WorldOptions options;
             options.threads = run + 1;
+            options.teamPacing = TeamPacing::Always; // every step on the team, even on a busy machine
             World w = makeWorld(scenes::randomBoxes(400, 3), options);
             for (int i = 0; i < 150; ++i)
                 w.step();
@@ -513,6 +553,7 @@ private slots:
         for (int run = 0; run < 2; ++run) {
             WorldOptions options;
             options.threads = run == 0 ? 1 : threads;
+            options.teamPacing = TeamPacing::Always; // every step on the team, even on a busy machine
             World w = makeWorld(s, options);
             for (int i = 0; i < 100; ++i)
                 w.step();
@@ -557,6 +598,7 @@ private slots:
         for (int run = 0; run < 2; ++run) {
             WorldOptions options;
             options.threads = run + 1;
+            options.teamPacing = TeamPacing::Always; // every step on the team, even on a busy machine
             options.effects = EffectsSetting::parse("auto,-sleeping").value();
             World w = makeWorld(s, options);
             for (int i = 0; i < 90; ++i)
@@ -592,6 +634,7 @@ private slots:
         for (int run = 0; run < 2; ++run) {
             WorldOptions options;
             options.threads = run + 1;
+            options.teamPacing = TeamPacing::Always; // every step on the team, even on a busy machine
             World w = makeWorld(s, options);
             for (int i = 0; i < 20; ++i)
                 w.step();

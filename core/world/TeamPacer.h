@@ -1,0 +1,63 @@
+// Whether a world's thread team pays, step by step. A step gives the same frames on any number of threads, so the
+// world may take each step on its team or on member 0 alone as the machine allows. On a machine whose other cores
+// are busy (another program, a second bake), a member of the team is taken off its core for milliseconds at a time,
+// and every barrier waits for it: with one busy process beside it on this project's two-core machines, ramps.obj
+// stepped on two threads at 0.44-0.63 times the speed of one (2026-12-02). Then the world steps alone.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace rl {
+
+enum class TeamPacing {
+    Adaptive,       // the team while it pays (TeamPacer), alone while it does not
+    Always,         // every step on the team (the tests that count what the team did)
+    EveryOtherStep, // the team and alone by turns, whatever the timing (the tests of the switch)
+};
+
+class TeamPacer {
+public:
+    // Team steps judged at a time, and member 0's share of waiting above which the team does not pay.
+    static constexpr int kWindow = 8;
+    static constexpr double kMaxWaitShare = 0.5;
+    // Steps alone before the team is tried again, four times as many after each try that lost, up to the most. On a
+    // busy machine a try is costly: ramps.obj with another program on the second core took 6-10 ms a team step
+    // against 1.4 ms alone, and once 49 ms. With tries after 8, 16, 32, ... steps alone, each of three team steps,
+    // the team's steps took 0.28 and 0.31 s of 600-frame runs that took 0.99 and 1.06 s on two threads against 0.85
+    // and 0.78 s on one (2026-12-02).
+    static constexpr int kFirstBackoff = 4;
+    static constexpr int kBackoffGrowth = 4;
+    static constexpr int kMaxBackoff = 512;
+    // A try is this many team steps; the first is not counted (the other members were asleep, their caches cold).
+    static constexpr int kProbeSteps = 3;
+    // The team comes back if its steps in the try took less than this share of the last steps alone. A try whose
+    // first step takes more than kProbeGiveUp times as long as those ends there.
+    static constexpr double kProbeGain = 0.9;
+    static constexpr double kProbeGiveUp = 1.5;
+
+    // Whether the next step runs on the team.
+    bool useTeam() const { return m_mode != Mode::Alone; }
+    // The step that just ran, as useTeam() said: its wall time and how long member 0 waited for the others (s).
+    //
+    // On the team, member 0 was busy for step - wait. The others' share of the work is at most about as much (the
+    // team's jobs are shared out evenly, and member 0 also does the serial parts), so alone the step would take
+    // at most 2 (step - wait): less than the step itself once member 0 waits more than half of it. Over a window of
+    // team steps where it does, the world goes alone; after a backoff it tries the team again, and keeps it if its
+    // steps are faster than the last ones alone.
+    void record(double stepSeconds, double waitSeconds);
+
+    int backoff() const { return m_backoff; }
+
+private:
+    enum class Mode { Team, Alone, Probe };
+    static constexpr int kAloneSamples = 4;
+    Mode m_mode = Mode::Team;
+    int m_steps = 0; // in the current window, stretch alone or try
+    double m_stepSum = 0.0, m_waitSum = 0.0;
+    std::array<double, kAloneSamples> m_alone{}; // the last steps alone, round robin
+    int m_aloneCount = 0;
+    int m_backoff = kFirstBackoff;
+};
+
+} // namespace rl

@@ -1,0 +1,125 @@
+// The team pacer: a world steps on its team while member 0 waits for the others less than half of the step, alone
+// once it waits more over a window, and tries the team again after a backoff that grows while the team loses.
+#include "world/TeamPacer.h"
+
+#include <QTest>
+
+using namespace rl;
+
+namespace {
+
+// Feeds `steps` steps of the given cost to the pacer, each as the pacer chose it: a team step takes `teamStep` s of
+// which member 0 waited `teamWait`, a step alone takes `aloneStep`. Returns how many ran on the team.
+int feed(TeamPacer& pacer, int steps, double teamStep, double teamWait, double aloneStep) {
+    int onTeam = 0;
+    for (int i = 0; i < steps; ++i) {
+        if (pacer.useTeam()) {
+            ++onTeam;
+            pacer.record(teamStep, teamWait);
+        } else {
+            pacer.record(aloneStep, 0.0);
+        }
+    }
+    return onTeam;
+}
+
+} // namespace
+
+class TestTeamPacer : public QObject {
+    Q_OBJECT
+private slots:
+    // A team that pays (two threads at 1.8x, member 0 waiting 10 % of the step) keeps every step; so does one that
+    // pays less, as long as member 0 waits at most half the step.
+    void keepsATeamThatPays_data() {
+        QTest::addColumn<double>("waitShare");
+        QTest::newRow("waits 10 %") << 0.1;
+        QTest::newRow("waits 30 %") << 0.3;
+        QTest::newRow("waits 50 %") << 0.5;
+    }
+    void keepsATeamThatPays() {
+        QFETCH(double, waitShare);
+        TeamPacer pacer;
+        QVERIFY(pacer.useTeam());
+        QCOMPARE(feed(pacer, 1000, 1.0, waitShare, 1.8), 1000);
+    }
+
+    // Member 0 waits 70 % of each team step (the other core is busy): after one window the world steps alone, and
+    // tries the team again after 4, 16, 64 steps and so on, up to one try in 512.
+    void goesAloneWhenTheTeamDoesNotPay() {
+        TeamPacer pacer;
+        for (int i = 0; i < TeamPacer::kWindow - 1; ++i) {
+            pacer.record(2.0, 1.4);
+            QVERIFY(pacer.useTeam());
+        }
+        pacer.record(2.0, 1.4);
+        QVERIFY(!pacer.useTeam());
+        // Alone for the first backoff, then a try, which loses: the team steps take 1.4 against 1.0 alone.
+        QCOMPARE(feed(pacer, TeamPacer::kFirstBackoff, 2.0, 1.4, 1.0), 0);
+        QVERIFY(pacer.useTeam());
+        QCOMPARE(feed(pacer, TeamPacer::kProbeSteps, 1.4, 0.9, 1.0), TeamPacer::kProbeSteps);
+        QVERIFY(!pacer.useTeam());
+        QCOMPARE(pacer.backoff(), TeamPacer::kBackoffGrowth * TeamPacer::kFirstBackoff);
+        // Over a long run the tries back off to the most, and the team takes few steps (each try one: its first step
+        // takes twice as long as the steps alone).
+        const int steps = 20000;
+        const int onTeam = feed(pacer, steps, 2.0, 1.4, 1.0);
+        QCOMPARE(pacer.backoff(), TeamPacer::kMaxBackoff);
+        qInfo("%d of %d steps on a team that does not pay", onTeam, steps);
+        QVERIFY(onTeam <= steps / TeamPacer::kMaxBackoff + 10);
+    }
+
+    // The other core frees up: the next try finds the team faster than the last steps alone (by more than
+    // kProbeGain), and the world keeps the team, with the backoff back at its first.
+    void comesBackWhenTheTeamPaysAgain_data() {
+        QTest::addColumn<double>("probeStep");
+        QTest::addColumn<bool>("back");
+        QTest::newRow("team at 0.55 of alone") << 0.55 << true;
+        QTest::newRow("team at 0.85 of alone") << 0.85 << true;
+        QTest::newRow("team at 0.95 of alone") << 0.95 << false;
+        QTest::newRow("team slower") << 1.3 << false;
+    }
+    void comesBackWhenTheTeamPaysAgain() {
+        QFETCH(double, probeStep);
+        QFETCH(bool, back);
+        TeamPacer pacer;
+        feed(pacer, TeamPacer::kWindow, 2.0, 1.4, 1.0); // gone alone
+        QVERIFY(!pacer.useTeam());
+        feed(pacer, TeamPacer::kFirstBackoff, 2.0, 1.4, 1.0);
+        QVERIFY(pacer.useTeam());
+        // The first step of the try is not counted: the other thread had to wake.
+        pacer.record(1.4, 0.9);
+        for (int i = 1; i < TeamPacer::kProbeSteps; ++i)
+            pacer.record(probeStep, 0.1 * probeStep);
+        QCOMPARE(pacer.useTeam(), back);
+        QCOMPARE(pacer.backoff(),
+                 back ? TeamPacer::kFirstBackoff : TeamPacer::kBackoffGrowth * TeamPacer::kFirstBackoff);
+        if (back)
+            QCOMPARE(feed(pacer, 500, probeStep, 0.1 * probeStep, 1.0), 500);
+    }
+
+    // A try whose first step takes more than kProbeGiveUp times the last steps alone ends there: on a busy machine
+    // one such step took 49 ms against 1.4 ms alone (ramps.obj), and two more would follow.
+    void aSlowFirstStepEndsTheTry() {
+        TeamPacer pacer;
+        feed(pacer, TeamPacer::kWindow, 2.0, 1.4, 1.0);
+        feed(pacer, TeamPacer::kFirstBackoff, 2.0, 1.4, 1.0);
+        QVERIFY(pacer.useTeam());
+        pacer.record(1.6, 1.2);
+        QVERIFY(!pacer.useTeam());
+        QCOMPARE(pacer.backoff(), TeamPacer::kBackoffGrowth * TeamPacer::kFirstBackoff);
+    }
+
+    // A short stall (one slow step in a window) does not send the world alone: the window's total decides.
+    void oneSlowStepInAWindowIsNotEnough() {
+        TeamPacer pacer;
+        for (int window = 0; window < 50; ++window) {
+            pacer.record(3.0, 2.5); // the other thread lost its core for most of this step
+            for (int i = 1; i < TeamPacer::kWindow; ++i)
+                pacer.record(1.0, 0.1);
+            QVERIFY(pacer.useTeam());
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestTeamPacer)
+#include "tst_teampacer.moc"

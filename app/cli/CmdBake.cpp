@@ -53,7 +53,10 @@ int runBake(const QStringList& arguments) {
     parser.addOption({"iterations", "Solver iterations per substep, overriding the scene.", "i"});
     parser.addOption({"integrator", "explicit-euler, symplectic-euler, verlet or rk4.", "name"});
     parser.addOption({"effects", "auto, none, all, linear-only, or a list such as auto,-sleeping,+ccd.", "list"});
-    parser.addOption({"threads", "Worker threads (results are identical for any count).", "t"});
+    parser.addOption({"threads",
+                      "Worker threads (results are identical for any count). While other programs keep the "
+                      "machine's cores busy, steps run on one thread (--profile: counter=steps_alone).",
+                      "t"});
     parser.addOption({"profile", "Print per-stage times, the active effects and counters to stdout."});
     parser.addOption({"quiet", "No progress on stderr."});
     if (const std::optional<int> done = parseArguments(parser, arguments, "bake"))

@@ -53,7 +53,8 @@ struct BenchResult {
     int contacts = 0;
     // Profile totals over the run, grouped: broadphase, narrowphase, solver (islands through restitution), other.
     double broadMs = 0.0, narrowMs = 0.0, solveMs = 0.0, otherMs = 0.0;
-    uint64_t stateHash = 0; // FNV-1a over the bits of every body's position and orientation after the run
+    uint64_t stateHash = 0;  // FNV-1a over the bits of every body's position and orientation after the run
+    uint64_t stepsAlone = 0; // steps a threaded world took on one thread, its team not paying (TeamPacer), all runs
 };
 
 // Nearest-rank percentile of sorted values (p in (0, 1]).
@@ -195,6 +196,7 @@ bool runWorld(World& world, int frames, const QString& label, bool quiet, FrameT
         }
     }
     out.stateHash = world.stateHash();
+    out.stepsAlone = p.counter(Counter::StepsAlone);
     return true;
 }
 
@@ -202,13 +204,15 @@ bool runWorld(World& world, int frames, const QString& label, bool quiet, FrameT
 QString threadsLine(const QString& label, int threads, const BenchResult& threaded, const BenchResult& one) {
     const auto ratio = [](double a, double b) { return b > 0.0 ? a / b : 0.0; };
     return QString("threads scene=%1 threads=%2 one_thread_median_ms=%3 speedup_median=%4 speedup_mean=%5 "
-                   "identical=%6\n")
+                   "identical=%6 steps_alone=%7/%8\n")
         .arg(label)
         .arg(threads)
         .arg(one.medianMs, 0, 'f', 3)
         .arg(ratio(one.medianMs, threaded.medianMs), 0, 'f', 2)
         .arg(ratio(one.meanMs, threaded.meanMs), 0, 'f', 2)
-        .arg(one.stateHash == threaded.stateHash ? "yes" : "no");
+        .arg(one.stateHash == threaded.stateHash ? "yes" : "no")
+        .arg(threaded.stepsAlone)
+        .arg(static_cast<qulonglong>(threaded.frames) * static_cast<qulonglong>(threaded.runs));
 }
 
 // The fields both engines' lines share: bodies= frames= median_ms= p95_ms= mean_ms= awake= contacts=.
@@ -301,7 +305,9 @@ int runBench(const QStringList& arguments) {
     parser.addOption({"threads",
                       "Threads for RigidLab's step (default 1). Above 1, each scene is then run again on one thread "
                       "and a line threads scene=... one_thread_median_ms= speedup_median= speedup_mean= identical= "
-                      "compares them (identical: the same final state, bit for bit).",
+                      "steps_alone= compares them (identical: the same final state, bit for bit; steps_alone: the "
+                      "steps of all runs that the threaded world took on one thread because its team did not pay, "
+                      "the machine's other cores being busy).",
                       "t"});
     parser.addOption({"runs",
                       QString("Runs of each engine on each scene (default %1), taking turns; each frame counts at its "
@@ -432,6 +438,7 @@ int runBench(const QStringList& arguments) {
                 kept = run;
                 return true;
             }
+            kept.stepsAlone += run.stepsAlone;
             kept.broadMs = std::min(kept.broadMs, run.broadMs);
             kept.narrowMs = std::min(kept.narrowMs, run.narrowMs);
             kept.solveMs = std::min(kept.solveMs, run.solveMs);

@@ -88,6 +88,12 @@ private slots:
             const double v = f.value(key).toDouble(&ok);
             QVERIFY2(ok && v > 0.0, key);
         }
+        // The steps the threaded world took on one thread (its team not paying, TeamPacer), of 30 frames x 3 runs.
+        const QStringList alone = f.value("steps_alone").split('/');
+        QCOMPARE(alone.size(), 2);
+        QCOMPARE(alone[1], QStringLiteral("90"));
+        bool ok = false;
+        QVERIFY(alone[0].toInt(&ok) >= 0 && ok && alone[0].toInt() <= 90);
         qInfo("%s", qPrintable(lines[1]));
     }
 

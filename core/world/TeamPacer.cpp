@@ -12,7 +12,7 @@ void TeamPacer::record(double stepSeconds, double waitSeconds) {
         m_waitSum += waitSeconds;
         if (m_steps < kWindow)
             return;
-        if (m_waitSum > kMaxWaitShare * m_stepSum) {
+        if (m_waitSum > m_maxWaitShare * m_stepSum) {
             m_mode = Mode::Alone;
             m_aloneCount = 0;
         }

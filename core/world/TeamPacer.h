@@ -1,10 +1,11 @@
 // Whether a world's thread team pays, step by step. A step gives the same frames on any number of threads, so the
 // world may take each step on its team or on member 0 alone as the machine allows. On a machine whose other cores
 // are busy (another program, a second bake), a member of the team is taken off its core for milliseconds at a time,
-// and every barrier waits for it: with one busy process beside it on this project's two-core machines, ramps.obj
-// stepped on two threads at 0.44-0.63 times the speed of one (2026-12-02). Then the world steps alone.
+// and every barrier waits for it: with one busy program beside it on this project's two-core machine, a 10 s bake of
+// ramps.obj took 4.9-6.0 s on two threads against 0.90-1.27 s on one (2026-12-02). Then the world steps alone.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -18,9 +19,8 @@ enum class TeamPacing {
 
 class TeamPacer {
 public:
-    // Team steps judged at a time, and member 0's share of waiting above which the team does not pay.
+    // Team steps judged at a time.
     static constexpr int kWindow = 8;
-    static constexpr double kMaxWaitShare = 0.5;
     // Steps alone before the team is tried again, four times as many after each try that lost, up to the most. On a
     // busy machine a try is costly: ramps.obj with another program on the second core took 6-10 ms a team step
     // against 1.4 ms alone, and once 49 ms. With tries after 8, 16, 32, ... steps alone, each of three team steps,
@@ -36,22 +36,27 @@ public:
     static constexpr double kProbeGain = 0.9;
     static constexpr double kProbeGiveUp = 1.5;
 
+    // For a team of `teamSize` threads (at least 2).
+    explicit TeamPacer(int teamSize = 2) : m_maxWaitShare(1.0 - 1.0 / std::max(teamSize, 2)) {}
+
     // Whether the next step runs on the team.
     bool useTeam() const { return m_mode != Mode::Alone; }
     // The step that just ran, as useTeam() said: its wall time and how long member 0 waited for the others (s).
     //
-    // On the team, member 0 was busy for step - wait. The others' share of the work is at most about as much (the
-    // team's jobs are shared out evenly, and member 0 also does the serial parts), so alone the step would take
-    // at most 2 (step - wait): less than the step itself once member 0 waits more than half of it. Over a window of
-    // team steps where it does, the world goes alone; after a backoff it tries the team again, and keeps it if its
-    // steps are faster than the last ones alone.
+    // On the team, member 0 was busy for step - wait. Each other member's share of the work is at most about as
+    // much (the team's jobs are shared out evenly, and member 0 also does the serial parts), so alone the step
+    // would take at most n (step - wait) on a team of n: less than the step itself once member 0 waits more than
+    // 1 - 1/n of it (half, on two threads). Over a window of team steps where it does, the world goes alone; after
+    // a backoff it tries the team again, and keeps it if its steps are faster than the last ones alone.
     void record(double stepSeconds, double waitSeconds);
 
     int backoff() const { return m_backoff; }
+    double maxWaitShare() const { return m_maxWaitShare; }
 
 private:
     enum class Mode { Team, Alone, Probe };
     static constexpr int kAloneSamples = 4;
+    double m_maxWaitShare; // member 0's share of waiting above which the team does not pay
     Mode m_mode = Mode::Team;
     int m_steps = 0; // in the current window, stretch alone or try
     double m_stepSum = 0.0, m_waitSum = 0.0;

@@ -80,6 +80,7 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
     if (const int threads = std::clamp(options.threads, 1, 64); threads > 1) {
         w.m_ownTeam = std::make_unique<ThreadTeam>(threads);
         w.m_team = w.m_ownTeam.get();
+        w.m_pacer = TeamPacer(threads);
     }
     w.m_teamPacing = options.teamPacing;
     auto settingsError = [&](std::string message) {

@@ -109,6 +109,30 @@ private slots:
         QCOMPARE(pacer.backoff(), TeamPacer::kBackoffGrowth * TeamPacer::kFirstBackoff);
     }
 
+    // On a team of n, member 0 may wait up to 1 - 1/n of the step before going alone pays: n - 1 others each did
+    // about as much as it did.
+    void allowsMoreWaitingOnABiggerTeam_data() {
+        QTest::addColumn<int>("size");
+        QTest::addColumn<double>("waitShare");
+        QTest::addColumn<bool>("team");
+        QTest::newRow("2 threads, waits 45 %") << 2 << 0.45 << true;
+        QTest::newRow("2 threads, waits 60 %") << 2 << 0.6 << false;
+        QTest::newRow("3 threads, waits 60 %") << 3 << 0.6 << true;
+        QTest::newRow("3 threads, waits 70 %") << 3 << 0.7 << false;
+        QTest::newRow("4 threads, waits 70 %") << 4 << 0.7 << true;
+        QTest::newRow("4 threads, waits 80 %") << 4 << 0.8 << false;
+    }
+    void allowsMoreWaitingOnABiggerTeam() {
+        QFETCH(int, size);
+        QFETCH(double, waitShare);
+        QFETCH(bool, team);
+        TeamPacer pacer(size);
+        QCOMPARE(pacer.maxWaitShare(), 1.0 - 1.0 / size);
+        for (int i = 0; i < TeamPacer::kWindow; ++i)
+            pacer.record(1.0, waitShare);
+        QCOMPARE(pacer.useTeam(), team);
+    }
+
     // A short stall (one slow step in a window) does not send the world alone: the window's total decides.
     void oneSlowStepInAWindowIsNotEnough() {
         TeamPacer pacer;

@@ -5,6 +5,7 @@
 // speedup shows how far that alone moves a two-thread figure, with no synchronisation and no shared data to blame.
 //
 //   bench_machine_threads [--rounds N] [--frames N] [SCENE]     (SCENE: a library name or file; default ramps.obj)
+#include "BenchMedian.h"
 #include "io/SceneImport.h"
 #include "scene/SceneLibrary.h"
 #include "world/World.h"
@@ -58,12 +59,6 @@ double arithmeticMs(int threads) {
     return ms;
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n == 0 ? 0.0 : n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 // Median step time of a fresh world over `frames` steps.
 double stepMs(const Scene& scene, int threads, int frames, uint64_t& hash) {
     WorldOptions options;
@@ -81,7 +76,7 @@ double stepMs(const Scene& scene, int threads, int frames, uint64_t& hash) {
         times.push_back(msSince(start));
     }
     hash = world.stateHash();
-    return median(times);
+    return bench::median(times);
 }
 
 } // namespace

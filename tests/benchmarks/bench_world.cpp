@@ -1,5 +1,6 @@
 // Whole-world benchmark: steps the same scenes in RigidLab (default settings) and, when built with Bullet, in
 // Bullet's btDiscreteDynamicsWorld, and prints ms/step for both and the ratio RigidLab/Bullet from the same run.
+#include "BenchMedian.h"
 #include "io/SceneImport.h"
 #include "scene/BodyProperties.h"
 #include "scene/SceneLibrary.h"
@@ -59,14 +60,6 @@ struct Summary {
     double topY = 0.0; // highest centre of mass of a dynamic body at the end: shows whether a tower still stands
 };
 
-double medianOf(std::vector<double> v) {
-    if (v.empty())
-        return 0.0;
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 double p95Of(std::vector<double> v) {
     if (v.empty())
         return 0.0;
@@ -82,9 +75,9 @@ Summary summarize(const std::vector<Sample>& samples) {
         cpu.push_back(s.cpuMs);
     }
     Summary out;
-    out.wallMedian = medianOf(wall);
+    out.wallMedian = bench::median(wall);
     out.wallP95 = p95Of(wall);
-    out.cpuMedian = medianOf(cpu);
+    out.cpuMedian = bench::median(cpu);
     double total = 0.0;
     for (double c : cpu)
         total += c;

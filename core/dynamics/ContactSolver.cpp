@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <type_traits>
 
 namespace rl {
@@ -256,7 +257,7 @@ void ContactSolver::prepare(std::span<Manifold* const> manifolds, std::span<cons
                             std::span<const Real> restitution, std::span<const SolverBody> bodies,
                             std::span<const Vec3> centers, Real h, const ContactSolverSettings& settings,
                             std::span<const uint8_t> bodyPart, const ParallelFor& parallelFor,
-                            std::span<const Hold> held) {
+                            std::span<const Hold> held, const PackParts& packParts) {
     m_settings = settings;
     m_inverseH = h > 0.0 ? 1.0 / h : 0.0;
     m_h = h;
@@ -272,7 +273,8 @@ void ContactSolver::prepare(std::span<Manifold* const> manifolds, std::span<cons
     m_bounceOnly = !m_kept && settings.restitution;
     m_constraints.resize(m_kept || m_bounceOnly ? m_count : 0);
     m_bouncing.assign(m_bounceOnly ? m_count : 0, 0);
-    scheduleLevels(bodies.size(), bodyPart, solverIndexA, solverIndexB);
+    batchKeys(manifolds, parallelFor);
+    scheduleLevels(bodies.size(), bodyPart, solverIndexA, solverIndexB, packParts, parallelFor);
     const SetUpInputs inputs{manifolds, solverIndexA, solverIndexB, friction, restitution, bodies, centers, held};
     buildBatches(inputs, parallelFor);
     m_sweepRows = {};
@@ -281,10 +283,12 @@ void ContactSolver::prepare(std::span<Manifold* const> manifolds, std::span<cons
             m_sweepRows.frictionRows += 3u; // the tangent block (two rows) and the twist
     for (uint8_t key : m_batchKey)
         m_sweepRows.normalRows += 4u - key % 8u; // the point count (see buildBatches())
+    m_sweepRows.sweptBatches = batchCount();
 }
 
 void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bodyPart, std::span<const uint32_t> bodyA,
-                                   std::span<const uint32_t> bodyB) {
+                                   std::span<const uint32_t> bodyB, const PackParts& packParts,
+                                   const ParallelFor& parallelFor) {
     // Level schedule of the sequential order: a constraint's level is one more than the highest level among the
     // earlier constraints (in manifold order) that share one of its moving bodies. Solving level by level then
     // performs, for every body, the same updates in the same order as solving the constraints one after the other,
@@ -362,6 +366,26 @@ void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bo
         count = std::max(count, level + 1);
     }
     const size_t segments = bodyPart.empty() ? 1 : kParts + 1;
+    if (packParts) {
+        Schedule schedule;
+        for (size_t i = 0; i < m_count; ++i)
+            ++schedule.constraints[m_segment[i]];
+        std::copy(segmentLevels, segmentLevels + kParts + 1, schedule.levels.begin());
+        if (packParts(schedule) && s_packLevels) {
+            // The parts share no moving body, so each is packed alone, on a thread of the team if there is one.
+            const size_t parts = bodyPart.empty() ? 1 : kParts;
+            // (levelOf is this thread's: a lambda names a thread_local of the thread it runs on, so it takes a
+            // reference.)
+            std::array<uint32_t, kParts> batches{};
+            std::vector<uint32_t>& packed = levelOf;
+            shareOut(parallelFor, parts, [&](size_t first, size_t last) {
+                for (size_t part = first; part < last; ++part)
+                    packPartLevels(part, bodyCount, static_cast<size_t>(laneWidthHere()), bodyA, bodyB, packed,
+                                   batches[part]);
+            });
+            std::copy(batches.begin(), batches.begin() + static_cast<std::ptrdiff_t>(parts), segmentLevels);
+        }
+    }
     uint32_t levels = 0;
     for (size_t segment = 0; segment < segments; ++segment) {
         m_segmentLevelStart[segment] = levels;
@@ -383,13 +407,164 @@ void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bo
         m_solveOrder[fill[levelOf[i]]++] = static_cast<uint32_t>(i);
 }
 
-int ContactSolver::s_widestLanes = 8;
-bool ContactSolver::s_wideSetUp = true;
-bool ContactSolver::s_keepSeparations = true;
+void ContactSolver::packPartLevels(size_t part, size_t bodyCount, size_t width, std::span<const uint32_t> bodyA,
+                                   std::span<const uint32_t> bodyB, std::vector<uint32_t>& levelOf,
+                                   uint32_t& batches) const {
+    // A part swept by one thread needs its levels only to fill batches: the constraints of a batch must share no
+    // moving body, and each must come after the earlier constraints (in manifold order) of its bodies, so that every
+    // body still gets the same updates in the same order. Level by level, every level's last batch is part empty:
+    // over ramps.obj's first 120 frames on one thread 11,127 batches held 81,481 constraints, where 10,186 of eight
+    // lanes would do. So the constraints are listed into batches instead, each batch taking up to `width` of those
+    // whose earlier constraints are all in earlier batches, those with the longest chain of later constraints after
+    // them first (Hu's rule for unit tasks; ties in manifold order).
+    //
+    // A batch sweeps as many point slots as its constraint with the most points, so it is led by the ready
+    // constraint with the longest chain, and filled with ready ones of as many points as that one, then with fewer;
+    // never with more. (Filled by chain alone, boxes1000's first 120 frames took 19,877 batches instead of 22,040,
+    // but 76,557 point slots instead of 63,906, and their sweeps took longer.)
+    //
+    // Everything here is numbered by the constraint's place in the part (members).
+    constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+    constexpr int kPointCounts = 5; // 0 to 4 points
+    thread_local std::vector<uint32_t> members, last, next, waiting, chain, readyNext, batch;
+    thread_local std::array<std::vector<uint32_t>, kPointCounts> readyHead;
+    thread_local std::array<std::vector<uint64_t>, kPointCounts> nonEmpty;
+    members.clear();
+    for (size_t i = 0; i < m_count; ++i)
+        if (m_segment[i] == part)
+            members.push_back(static_cast<uint32_t>(i));
+    const size_t n = members.size();
+    // The point count from the key (buildBatches()), read beside the constraint rather than from its manifold.
+    const auto points = [&](uint32_t k) { return 4 - m_batchKey[members[k]] % 8; };
+    // next[2 k + s]: the constraint after k on its body A (s = 0) or B (s = 1); waiting[k]: how many of the
+    // constraints before k on its bodies are not in a batch yet (one if both bodies' are the same one).
+    last.assign(bodyCount, kNone);
+    next.assign(2 * n, kNone);
+    waiting.assign(n, 0);
+    chain.assign(n, 1);
+    for (uint32_t k = 0; k < n; ++k) {
+        const uint32_t i = members[k];
+        uint32_t before[2] = {kNone, kNone};
+        for (int side = 0; side < 2; ++side) {
+            const uint32_t body = side == 0 ? bodyA[i] : bodyB[i];
+            if (body == 0)
+                continue;
+            const uint32_t p = last[body];
+            if (p != kNone) {
+                next[2 * p + (bodyA[members[p]] == body ? 0 : 1)] = k;
+                before[side] = p;
+            }
+            last[body] = k;
+        }
+        waiting[k] = (before[0] != kNone ? 1u : 0u) + (before[1] != kNone && before[1] != before[0] ? 1u : 0u);
+    }
+    // chain[k]: the constraints in the longest run of later constraints that starts at k, k included.
+    uint32_t longest = 0;
+    for (size_t k = n; k-- > 0;) {
+        for (int side = 0; side < 2; ++side)
+            if (const uint32_t after = next[2 * k + side]; after != kNone)
+                chain[k] = std::max(chain[k], chain[after] + 1);
+        longest = std::max(longest, chain[k]);
+    }
+    // The constraints ready for a batch: one list per point count and chain length, and per point count a bit per
+    // chain length whose list holds any, so that a batch finds the longest chains ready without looking at the
+    // empty lists in between.
+    readyNext.assign(n, kNone);
+    const size_t lengths = static_cast<size_t>(longest) + 1, words = (lengths + 63) / 64;
+    for (int p = 0; p < kPointCounts; ++p) {
+        readyHead[p].assign(lengths, kNone);
+        nonEmpty[p].assign(words, 0);
+    }
+    std::array<uint32_t, kPointCounts> top{}; // per point count: no list above it holds a constraint
+    std::array<size_t, kPointCounts> ready{}; // per point count: the constraints in its lists
+    const auto makeReady = [&](uint32_t k) {
+        const uint32_t p = points(k), length = chain[k];
+        top[p] = std::max(top[p], length);
+        ++ready[p];
+        uint32_t& head = readyHead[p][length];
+        if (head == kNone)
+            nonEmpty[p][length / 64] |= uint64_t{1} << (length % 64);
+        readyNext[k] = head;
+        head = k;
+    };
+    // The longest chain below `below` ready among the constraints of p points; 0 if none (chains are 1 or more long).
+    const auto longestReady = [&](uint32_t p, uint32_t below) -> uint32_t {
+        if (ready[p] == 0 || below <= 1)
+            return 0;
+        const uint32_t from = std::min(below - 1, top[p]);
+        size_t w = from / 64;
+        uint64_t bits = nonEmpty[p][w] & (~uint64_t{0} >> (63 - from % 64));
+        for (;;) {
+            if (bits != 0)
+                return static_cast<uint32_t>(w * 64 + 63 - static_cast<size_t>(std::countl_zero(bits)));
+            if (w == 0)
+                return 0;
+            bits = nonEmpty[p][--w];
+        }
+    };
+    // Last in first out: made ready in reverse, ties come out in manifold order.
+    for (size_t k = n; k-- > 0;)
+        if (waiting[k] == 0)
+            makeReady(static_cast<uint32_t>(k));
+    // Takes ready constraints of p points into the batch, longest chains first, until it is full.
+    const auto take = [&](uint32_t p) {
+        for (uint32_t length = top[p]; length > 0 && batch.size() < width; length = longestReady(p, length)) {
+            uint32_t& head = readyHead[p][length];
+            while (head != kNone && batch.size() < width) {
+                batch.push_back(head);
+                head = readyNext[head];
+                --ready[p];
+            }
+            if (head == kNone)
+                nonEmpty[p][length / 64] &= ~(uint64_t{1} << (length % 64));
+        }
+    };
+    uint32_t count = 0;
+    for (size_t left = n; left > 0; left -= batch.size(), ++count) {
+        batch.clear();
+        // The batch is led by the point count of the longest chain ready (the most points among ties).
+        uint32_t lead = kPointCounts - 1, leadLength = 0;
+        for (uint32_t p = kPointCounts; p-- > 0;) {
+            top[p] = longestReady(p, top[p] + 1);
+            if (top[p] > leadLength) {
+                lead = p;
+                leadLength = top[p];
+            }
+        }
+        for (uint32_t p = lead + 1; p-- > 0 && batch.size() < width;)
+            take(p);
+        // The constraints after this batch's become ready for the next one, not for this one.
+        for (const uint32_t k : batch) {
+            levelOf[members[k]] = count;
+            const uint32_t afterA = next[2 * k], afterB = next[2 * k + 1];
+            if (afterA != kNone && --waiting[afterA] == 0)
+                makeReady(afterA);
+            if (afterB != kNone && afterB != afterA && --waiting[afterB] == 0)
+                makeReady(afterB);
+        }
+    }
+    batches = count;
+}
 
-void ContactSolver::buildBatches(const SetUpInputs& inputs, const ParallelFor& parallelFor) {
-    m_batchesAhead = false;
-    m_separationsKept = false;
+void ContactSolver::batchKeys(std::span<Manifold* const> manifolds, const ParallelFor& parallelFor) {
+    // A constraint's key groups it with others of the same point count, and pushing ones apart from those that did
+    // not push in the last step: the lanes of a batch then have work of the same size, and a point slot in which no
+    // lane pushes skips its warm start, as the scalar sweep skips such points (buildBatches(), packPartLevels()).
+    // The keys are worked out once per constraint, not in every comparison of a sort.
+    // (The manifold's impulses are the constraint's if warm starting is on, else zero: setUpConstraint().)
+    m_batchKey.resize(m_count);
+    shareOut(parallelFor, m_count, [&](size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            const Manifold& m = *manifolds[i];
+            bool pushing = false;
+            for (int k = 0; k < m.pointCount; ++k)
+                pushing = pushing || (m_settings.warmStarting && m.points[k].normalImpulse != 0.0);
+            m_batchKey[i] = static_cast<uint8_t>((pushing ? 0 : 8) + (4 - m.pointCount));
+        }
+    });
+}
+
+int ContactSolver::laneWidthHere() {
     // Eight lanes of doubles need AVX-512 (x86-64-v4); elsewhere 512-bit vectors split into halves ran 2.2x slower
     // than four lanes in one AVX2 register (a microbenchmark of the row update, 2026-11-26).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
@@ -397,7 +572,18 @@ void ContactSolver::buildBatches(const SetUpInputs& inputs, const ParallelFor& p
 #else
     static const bool wide = false;
 #endif
-    m_width = wide && s_widestLanes >= 8 ? 8 : 4;
+    return wide && s_widestLanes >= 8 ? 8 : 4;
+}
+
+int ContactSolver::s_widestLanes = 8;
+bool ContactSolver::s_wideSetUp = true;
+bool ContactSolver::s_packLevels = true;
+bool ContactSolver::s_keepSeparations = true;
+
+void ContactSolver::buildBatches(const SetUpInputs& inputs, const ParallelFor& parallelFor) {
+    m_batchesAhead = false;
+    m_separationsKept = false;
+    m_width = laneWidthHere();
     if (m_width == 8)
         buildBatches(m_store8, inputs, parallelFor);
     else
@@ -427,22 +613,8 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
             lanes[axis].v[lane] = static_cast<std::remove_reference_t<decltype(lanes[axis].v[0])>>(v[axis]);
     };
     // Within a level the order is free (its constraints share no moving body), so constraints are grouped there by
-    // their point count, and pushing ones apart from those that did not push in the last step: the lanes of a batch
-    // then have work of the same size, and a point slot in which no lane pushes skips its warm start, as the scalar
-    // sweep skips such points.
-    // The keys are worked out once per constraint, not in every comparison of the sort.
-    std::vector<uint8_t>& key = m_batchKey;
-    // (The manifold's impulses are the constraint's if warm starting is on, else zero: setUpConstraint().)
-    key.resize(m_count);
-    shareOut(parallelFor, m_count, [&](size_t begin, size_t end) {
-        for (size_t i = begin; i < end; ++i) {
-            const Manifold& m = *inputs.manifolds[i];
-            bool pushing = false;
-            for (int k = 0; k < m.pointCount; ++k)
-                pushing = pushing || (m_settings.warmStarting && m.points[k].normalImpulse != 0.0);
-            key[i] = static_cast<uint8_t>((pushing ? 0 : 8) + (4 - m.pointCount));
-        }
-    });
+    // their key (batchKeys()).
+    const std::vector<uint8_t>& key = m_batchKey;
     shareOut(parallelFor, levels, [&](size_t begin, size_t end) {
         for (size_t level = begin; level < end; ++level)
             std::stable_sort(m_solveOrder.begin() + levelBegin(level), m_solveOrder.begin() + levelEnd(level),
@@ -794,6 +966,7 @@ void ContactSolver::solveOne(std::span<SolverBody> bodies, ContactConstraint& c,
 void ContactSolver::countSweep() {
     m_counters.normalRows += m_sweepRows.normalRows;
     m_counters.frictionRows += m_sweepRows.frictionRows;
+    m_counters.sweptBatches += m_sweepRows.sweptBatches;
 }
 
 void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {

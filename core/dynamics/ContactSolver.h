@@ -78,6 +78,7 @@ struct ContactSolverCounters {
     uint64_t normalRows = 0;   // normal constraint rows solved (points x iterations)
     uint64_t frictionRows = 0; // friction rows solved: two tangents and the twist per manifold and sweep
     uint64_t restitutionRows = 0;
+    uint64_t sweptBatches = 0; // batches swept by the solve and relax sweeps (each of up to 8 or 4 constraints)
 };
 
 // One manifold's solver data. bodyA/bodyB index the SolverBody array; a static body is an entry with invMass 0.
@@ -160,13 +161,23 @@ public:
     // held with scale 0 is read but the constraint's impulses do not move it, as if it were infinitely heavy, so the
     // other body is stopped by it in one sweep (shock propagation: World holds the lower of two bodies). A scale
     // between 0 and 1 multiplies that side's inverse mass and inertia in this constraint only.
+    //
+    // packParts, if given, is asked once the levels of the sequential order are known (Schedule: constraints and
+    // levels per segment) whether every part (without parts: all the constraints) will be swept by one thread alone.
+    // If it says so, those levels are packed into batches (packPartLevels()): each level is then one batch, and the
+    // sweeps take fewer batches for the same updates in the same order per body. Levels so packed are too narrow to
+    // share out over a team level by level.
+    static constexpr size_t kParts = 2;
+    static constexpr size_t kBoundarySegment = kParts; // segments 0 .. kParts - 1 are the parts
+    struct Schedule {
+        std::array<size_t, kParts + 1> constraints{}, levels{}; // per segment, before any packing
+    };
+    using PackParts = std::function<bool(const Schedule&)>;
     void prepare(std::span<Manifold* const> manifolds, std::span<const uint32_t> solverIndexA,
                  std::span<const uint32_t> solverIndexB, std::span<const Real> friction,
                  std::span<const Real> restitution, std::span<const SolverBody> bodies, std::span<const Vec3> centers,
                  Real h, const ContactSolverSettings& settings, std::span<const uint8_t> bodyPart = {},
-                 const ParallelFor& parallelFor = {}, std::span<const Hold> held = {});
-    static constexpr size_t kParts = 2;
-    static constexpr size_t kBoundarySegment = kParts; // segments 0 .. kParts - 1 are the parts
+                 const ParallelFor& parallelFor = {}, std::span<const Hold> held = {}, const PackParts& packParts = {});
 
     // Called once per substep, after the velocities were integrated: applies the accumulated impulses (those of
     // the last step at first, then this step's so far).
@@ -188,7 +199,8 @@ public:
     // (ContactSolverWide.cpp) whose lanes run side by side in vector registers, eight doubles in an AVX-512 register
     // where the CPU has it (x86-64-v4), else four. Every body still receives the same updates in the same order as in
     // the sequential sweep, segment by segment (warmStartSequential(), solveSequential(); see prepare()), so the
-    // results are the same numbers, whatever the width and the order of the batches within a level.
+    // results are the same numbers, whatever the width and the order of the batches within a level. A part whose
+    // levels were packed (packParts in prepare()) has one batch a level.
     //
     // The same, split up for several threads: batches begin..end within one level may run on different threads at
     // once. A substep is beginSubstep() once, then warmStartBatchRange() over every level, then sweeps of
@@ -255,6 +267,9 @@ public:
     // false takes every point's separation in every sweep, as if each were given Motion::Moved. For tests, which
     // compare the two; set it while no sweep runs.
     static void setKeepSeparations(bool on) { s_keepSeparations = on; }
+    // false keeps the levels of the sequential order even where packParts says a thread sweeps the parts alone (see
+    // prepare()). For tests and benchmarks, which compare the two; it applies to the next prepare().
+    static void setPackLevels(bool on) { s_packLevels = on; }
 
     // The whole constraint records, in manifold order, with the impulses of the last sweep. prepare() keeps them only
     // when asked to (keepConstraints()); else this is empty. The sequential sweeps work on these records.
@@ -397,8 +412,16 @@ private:
     // records are kept (m_kept, or m_bounceOnly for those of the constraints that may bounce).
     void syncFromBatches() const;
     bool hasRecord(size_t i) const { return m_kept || (m_bounceOnly && m_bouncing[i] != 0); }
+    // m_batchKey from the manifolds (before scheduleLevels(), which may read it).
+    void batchKeys(std::span<Manifold* const> manifolds, const ParallelFor& parallelFor);
     void scheduleLevels(size_t bodyCount, std::span<const uint8_t> bodyPart, std::span<const uint32_t> bodyA,
-                        std::span<const uint32_t> bodyB);
+                        std::span<const uint32_t> bodyB, const PackParts& packParts, const ParallelFor& parallelFor);
+    // For scheduleLevels(): replaces the level of every constraint of segment `part` (in levelOf) by its batch
+    // within the segment, at most `width` constraints a batch, and sets `batches` to the segment's batch count.
+    void packPartLevels(size_t part, size_t bodyCount, size_t width, std::span<const uint32_t> bodyA,
+                        std::span<const uint32_t> bodyB, std::vector<uint32_t>& levelOf, uint32_t& batches) const;
+    // The lanes of a batch on this CPU: 8 with AVX-512 (x86-64-v4), else 4 (buildBatches()).
+    static int laneWidthHere();
     // Calls visit(constraint index) in the order of the sequential sweeps: the parts' constraints in manifold order,
     // then the boundary's level by level.
     template <class Visit>
@@ -431,6 +454,7 @@ private:
     int m_width = 4;
     static int s_widestLanes;            // 8, or 4 to keep to four lanes
     static bool s_wideSetUp;             // setWideSetUp()
+    static bool s_packLevels;            // setPackLevels()
     static bool s_keepSeparations;       // setKeepSeparations()
     mutable bool m_batchesAhead = false; // the batches hold newer impulses than m_constraints
     bool m_separationsKept = false;      // a whole sweep by solve() kept the separations since prepare()

@@ -18,23 +18,11 @@ constexpr std::string_view kStageNames[kStageCount] = {"update_broadphase",
                                                        "ccd",
                                                        "sleep",
                                                        "store_frame"};
-constexpr std::string_view kCounterNames[kCounterCount] = {"pairs",
-                                                           "pairs_tested",
-                                                           "manifolds",
-                                                           "contact_points",
-                                                           "normal_rows",
-                                                           "friction_rows",
-                                                           "restitution_rows",
-                                                           "awake_bodies",
-                                                           "integrated_bodies",
-                                                           "ccd_bodies",
-                                                           "ccd_hits",
-                                                           "steps",
-                                                           "islands_shared_out",
-                                                           "islands_cut",
-                                                           "solved_in_parts",
-                                                           "part_imbalance",
-                                                           "steps_alone"};
+constexpr std::string_view kCounterNames[kCounterCount] = {
+    "pairs",           "pairs_tested",     "manifolds",     "contact_points",     "normal_rows",
+    "friction_rows",   "restitution_rows", "swept_batches", "awake_bodies",       "integrated_bodies",
+    "ccd_bodies",      "ccd_hits",         "steps",         "islands_shared_out", "islands_cut",
+    "solved_in_parts", "part_imbalance",   "steps_alone"};
 } // namespace
 
 std::string_view stageName(Stage stage) {

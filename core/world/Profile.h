@@ -39,6 +39,7 @@ enum class Counter {
     NormalRows,       // normal rows solved (points x passes)
     FrictionRows,     // friction rows solved
     RestitutionRows,  // restitution rows applied
+    SweptBatches,     // batches of constraints swept side by side by the solve and relax sweeps (ContactSolver)
     AwakeBodies,      // awake dynamic bodies (per step)
     IntegratedBodies, // bodies moved by the integrator (per substep)
     CcdBodies,        // bodies swept by CCD

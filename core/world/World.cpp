@@ -952,6 +952,7 @@ void World::countSolverRows() {
     m_profile.count(Counter::NormalRows, sc.normalRows);
     m_profile.count(Counter::FrictionRows, sc.frictionRows);
     m_profile.count(Counter::RestitutionRows, sc.restitutionRows);
+    m_profile.count(Counter::SweptBatches, sc.sweptBatches);
 }
 
 void World::solveGroup(std::span<const uint32_t> group, int refinement) {
@@ -1000,6 +1001,7 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
         m_solverCounters.normalRows += sc.normalRows;
         m_solverCounters.frictionRows += sc.frictionRows;
         m_solverCounters.restitutionRows += sc.restitutionRows;
+        m_solverCounters.sweptBatches += sc.sweptBatches;
         part.rows = {};
         part.islandsCutTotal = part.partImbalanceTotal = 0;
         for (ClampCounters& clamps : part.clamps) {
@@ -1449,11 +1451,29 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
 
     ContactSolver& solver = scratch.solver;
     solver.resetCounters();
+    // How the group is swept (below) is decided from the solver's levels once it has them: by parts (when neither
+    // part holds more than three quarters of the two parts' constraints), level by level on the team, or by one
+    // thread. Where each part (or the whole group) is swept by one thread, the solver packs its levels into full
+    // batches (ContactSolver::packPartLevels()); the frames are the same either way. (The parts were weighed by
+    // their batches until 2026-12-02; packed, those are no longer known before the set-up.)
+    const bool teamMay = mayUseTeam && m_team && group.size() >= kMinBodiesForTeam;
+    bool byParts = false, byLevels = false;
+    const auto plan = [&](const ContactSolver::Schedule& schedule) {
+        const size_t part0 = schedule.constraints[0], part1 = schedule.constraints[1];
+        byParts = teamMay && scratch.islandsCut > 0 && 4 * std::min(part0, part1) >= part0 + part1;
+        size_t constraints = 0, levels = 0;
+        for (size_t segment = 0; segment < schedule.levels.size(); ++segment) {
+            constraints += schedule.constraints[segment];
+            levels += schedule.levels[segment];
+        }
+        byLevels = !byParts && teamMay && levels > 0 && constraints / levels >= kMinLevelWidth;
+        return !byLevels;
+    };
     // A big group's constraints are set up by the whole team too (each one alone).
     solver.prepare(scratch.manifolds, scratch.indexA, scratch.indexB, scratch.friction, scratch.restitution, bodies,
                    scratch.centers, h, settings,
                    scratch.islandsCut > 0 ? std::span<const uint8_t>(scratch.part) : std::span<const uint8_t>(),
-                   parallelFor, scratch.held);
+                   parallelFor, scratch.held, plan);
 
     // The team solves the group together: bodies are split evenly for the integration, and each level of the
     // solver's schedule is split evenly for the contacts, with a barrier after every level. Every body sees the
@@ -1472,20 +1492,9 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
                    ? (solver.levelEnd(lastLevel - 1) - solver.levelBegin(firstLevel)) / (lastLevel - firstLevel)
                    : 0;
     };
-    const auto batchCount = [&](size_t segment) {
-        const auto [begin, end] = solver.segmentBatches(segment);
-        return end - begin;
-    };
-    const size_t partBatches[2] = {batchCount(0), batchCount(1)};
-    const bool byParts = mayUseTeam && m_team && scratch.islandsCut > 0 && group.size() >= kMinBodiesForTeam &&
-                         4 * std::min(partBatches[0], partBatches[1]) >= partBatches[0] + partBatches[1];
     const bool boundaryShared =
         levelWidthOf(solver.segmentLevelBegin(kBoundary), solver.segmentLevelBegin(kBoundary + 1)) >= kMinLevelWidth;
-    const size_t levelWidth = levelWidthOf(0, solver.levelCount());
-    const int members =
-        byParts || (mayUseTeam && m_team && group.size() >= kMinBodiesForTeam && levelWidth >= kMinLevelWidth)
-            ? m_team->size()
-            : 1;
+    const int members = byParts || byLevels ? m_team->size() : 1;
     scratch.clamps.resize(static_cast<size_t>(members));
     // Which member integrates which local bodies: ownedStart[m] .. ownedStart[m + 1]. Solved by parts, each member
     // integrates the part it sweeps (numberByParts() made each part one run), so that a body's lines stay in one
@@ -1663,6 +1672,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
     scratch.rows.normalRows += sc.normalRows;
     scratch.rows.frictionRows += sc.frictionRows;
     scratch.rows.restitutionRows += sc.restitutionRows;
+    scratch.rows.sweptBatches += sc.sweptBatches;
     scratch.islandsCutTotal += scratch.islandsCut;
     scratch.partImbalanceTotal += scratch.partImbalance;
 }

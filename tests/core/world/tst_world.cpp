@@ -371,6 +371,59 @@ private slots:
             QVERIFY(two.profile().counter(Counter::IslandsSharedOut) > 0); // the team did solve
     }
 
+    // Where a thread sweeps a part (or a whole group, or its islands) alone, the solver packs the part's levels into
+    // full batches (ContactSolver::packPartLevels()): the same updates per body in the same order, so the same frames
+    // bit for bit as the levels unpacked (ContactSolver::setPackLevels(false)), in fewer batches: on one thread, with
+    // the islands shared out on two, and with a pyramid cut in two parts, each swept by one thread.
+    void packedLevelsGiveIdenticalResults_data() {
+        QTest::addColumn<QString>("scene"); // a library name or a file under resources/scenes
+        QTest::addColumn<int>("threads");
+        QTest::addColumn<int>("frames");
+        QTest::addColumn<bool>("inParts"); // some solves swept by parts
+        QTest::newRow("pyramid20, one thread") << "pyramid20" << 1 << 60 << false;
+        QTest::newRow("boxes1000, one thread") << "boxes1000" << 1 << 60 << false;
+        QTest::newRow("ramps.obj, two threads") << "ramps.obj" << 2 << 120 << false;
+        QTest::newRow("pyramid of 465 cubes, two threads") << "pyramid30" << 2 << 30 << true;
+    }
+    void packedLevelsGiveIdenticalResults() {
+        QFETCH(QString, scene);
+        QFETCH(int, threads);
+        QFETCH(int, frames);
+        QFETCH(bool, inParts);
+        std::optional<Scene> s;
+        if (scene.endsWith(".obj")) {
+            Result<Scene> imported = importScene(RL_SOURCE_DIR "/resources/scenes/" + scene.toStdString());
+            QVERIFY(imported.ok());
+            s = std::move(imported).value();
+        } else if (scene == "pyramid30") {
+            s = scenes::pyramid(30);
+        } else {
+            s = scenes::byName(scene.toStdString());
+        }
+        QVERIFY(s.has_value());
+        WorldOptions options;
+        options.threads = threads;
+        options.teamPacing = TeamPacing::Always; // every step on the team, even on a busy machine
+        World levels = makeWorld(*s, options), packed = makeWorld(*s, options);
+        for (int i = 0; i < frames; ++i) {
+            ContactSolver::setPackLevels(false);
+            levels.step();
+            ContactSolver::setPackLevels(true);
+            packed.step();
+            if (i % 20 == 19 || i == frames - 1)
+                QCOMPARE(packed.stateHash(), levels.stateHash());
+        }
+        const uint64_t before = levels.profile().counter(Counter::SweptBatches),
+                       after = packed.profile().counter(Counter::SweptBatches);
+        qInfo("swept batches: %llu in levels, %llu packed", static_cast<unsigned long long>(before),
+              static_cast<unsigned long long>(after));
+        QVERIFY(after > 0);
+        QVERIFY(100 * after < 97 * before);
+        QCOMPARE(packed.profile().counter(Counter::SolvedInParts) > 0, inParts);
+        if (threads > 1 && !inParts)
+            QVERIFY(packed.profile().counter(Counter::IslandsSharedOut) > 0);
+    }
+
     // ramps.obj's 642 cubes on two threads: the team also shares the sleep clocks out (World::updateSleep()), and
     // the cubes that come to rest fall asleep on the same frames as on one thread.
     void sleepOnTwoThreadsGivesIdenticalResults() {

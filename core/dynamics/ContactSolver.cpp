@@ -416,7 +416,8 @@ void ContactSolver::packPartLevels(size_t part, size_t bodyCount, size_t width, 
     // over ramps.obj's first 120 frames on one thread 11,127 batches held 81,481 constraints, where 10,186 of eight
     // lanes would do. So the constraints are listed into batches instead, each batch taking up to `width` of those
     // whose earlier constraints are all in earlier batches, those with the longest chain of later constraints after
-    // them first (Hu's rule for unit tasks; ties in manifold order).
+    // them first (Hu's rule for unit tasks; among equal chains the one made ready last, the first ready ones in
+    // manifold order).
     //
     // A batch sweeps as many point slots as its constraint with the most points, so it is led by the ready
     // constraint with the longest chain, and filled with ready ones of as many points as that one, then with fewer;

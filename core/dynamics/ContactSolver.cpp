@@ -301,6 +301,7 @@ void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bo
     // With parts, the sequential order is segment by segment (see prepare()), and each segment's levels follow the
     // previous segment's, so that a segment is a contiguous run of levels and of batches.
     m_segment.resize(m_count);
+    Schedule schedule; // for packParts
     for (size_t i = 0; i < m_count; ++i) {
         const uint32_t a = bodyA[i], b = bodyB[i];
         if (bodyPart.empty())
@@ -309,6 +310,7 @@ void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bo
             m_segment[i] = bodyPart[a == 0 ? b : a];
         else
             m_segment[i] = bodyPart[a] == bodyPart[b] ? bodyPart[a] : kBoundarySegment;
+        ++schedule.constraints[m_segment[i]];
     }
     // One pass over the constraints numbers each one's level within its segment; the segments' levels are then
     // placed one after the other. The parts share no moving body, so one array of next levels serves both; the
@@ -367,9 +369,6 @@ void ContactSolver::scheduleLevels(size_t bodyCount, std::span<const uint8_t> bo
     }
     const size_t segments = bodyPart.empty() ? 1 : kParts + 1;
     if (packParts) {
-        Schedule schedule;
-        for (size_t i = 0; i < m_count; ++i)
-            ++schedule.constraints[m_segment[i]];
         std::copy(segmentLevels, segmentLevels + kParts + 1, schedule.levels.begin());
         if (packParts(schedule) && s_packLevels) {
             // The parts share no moving body, so each is packed alone, on a thread of the team if there is one.

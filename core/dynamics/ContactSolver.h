@@ -79,6 +79,13 @@ struct ContactSolverCounters {
     uint64_t frictionRows = 0; // friction rows solved: two tangents and the twist per manifold and sweep
     uint64_t restitutionRows = 0;
     uint64_t sweptBatches = 0; // batches swept by the solve and relax sweeps (each of up to 8 or 4 constraints)
+    ContactSolverCounters& operator+=(const ContactSolverCounters& o) {
+        normalRows += o.normalRows;
+        frictionRows += o.frictionRows;
+        restitutionRows += o.restitutionRows;
+        sweptBatches += o.sweptBatches;
+        return *this;
+    }
 };
 
 // One manifold's solver data. bodyA/bodyB index the SolverBody array; a static body is an entry with invMass 0.

@@ -997,11 +997,7 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
     }
     for (SolveScratch& part : solved) {
         m_profile.count(Counter::IslandsCut, part.islandsCutTotal);
-        const ContactSolverCounters& sc = part.rows;
-        m_solverCounters.normalRows += sc.normalRows;
-        m_solverCounters.frictionRows += sc.frictionRows;
-        m_solverCounters.restitutionRows += sc.restitutionRows;
-        m_solverCounters.sweptBatches += sc.sweptBatches;
+        m_solverCounters += part.rows;
         part.rows = {};
         part.islandsCutTotal = part.partImbalanceTotal = 0;
         for (ClampCounters& clamps : part.clamps) {
@@ -1668,11 +1664,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
     solver.storeImpulses(scratch.manifolds, parallelFor);
     for (uint32_t i : group)
         m_solverIndex[i] = 0;
-    const ContactSolverCounters& sc = solver.counters();
-    scratch.rows.normalRows += sc.normalRows;
-    scratch.rows.frictionRows += sc.frictionRows;
-    scratch.rows.restitutionRows += sc.restitutionRows;
-    scratch.rows.sweptBatches += sc.sweptBatches;
+    scratch.rows += solver.counters();
     scratch.islandsCutTotal += scratch.islandsCut;
     scratch.partImbalanceTotal += scratch.partImbalance;
 }

@@ -55,6 +55,7 @@ struct BenchResult {
     double broadMs = 0.0, narrowMs = 0.0, solveMs = 0.0, otherMs = 0.0;
     uint64_t stateHash = 0;  // FNV-1a over the bits of every body's position and orientation after the run
     uint64_t stepsAlone = 0; // steps a threaded world took on one thread, its team not paying (TeamPacer), all runs
+    uint64_t teamSteps = 0;  // steps in which its team ran any job (too few moving bodies and pairs: none), all runs
 };
 
 // Nearest-rank percentile of sorted values (p in (0, 1]).
@@ -197,6 +198,7 @@ bool runWorld(World& world, int frames, const QString& label, bool quiet, FrameT
     }
     out.stateHash = world.stateHash();
     out.stepsAlone = p.counter(Counter::StepsAlone);
+    out.teamSteps = p.counter(Counter::TeamSteps);
     return true;
 }
 
@@ -204,7 +206,7 @@ bool runWorld(World& world, int frames, const QString& label, bool quiet, FrameT
 QString threadsLine(const QString& label, int threads, const BenchResult& threaded, const BenchResult& one) {
     const auto ratio = [](double a, double b) { return b > 0.0 ? a / b : 0.0; };
     return QString("threads scene=%1 threads=%2 one_thread_median_ms=%3 speedup_median=%4 speedup_mean=%5 "
-                   "identical=%6 steps_alone=%7/%8\n")
+                   "identical=%6 steps_alone=%7/%8 team_steps=%9/%8\n")
         .arg(label)
         .arg(threads)
         .arg(one.medianMs, 0, 'f', 3)
@@ -212,7 +214,8 @@ QString threadsLine(const QString& label, int threads, const BenchResult& thread
         .arg(ratio(one.meanMs, threaded.meanMs), 0, 'f', 2)
         .arg(one.stateHash == threaded.stateHash ? "yes" : "no")
         .arg(threaded.stepsAlone)
-        .arg(static_cast<qulonglong>(threaded.frames) * static_cast<qulonglong>(threaded.runs));
+        .arg(static_cast<qulonglong>(threaded.frames) * static_cast<qulonglong>(threaded.runs))
+        .arg(threaded.teamSteps);
 }
 
 // The fields both engines' lines share: bodies= frames= median_ms= p95_ms= mean_ms= awake= contacts=.
@@ -302,13 +305,15 @@ int runBench(const QStringList& arguments) {
                           .arg(kQuickFrames)
                           .arg(kScalingFrames),
                       "n"});
-    parser.addOption({"threads",
-                      "Threads for RigidLab's step (default 1). Above 1, each scene is then run again on one thread "
-                      "and a line threads scene=... one_thread_median_ms= speedup_median= speedup_mean= identical= "
-                      "steps_alone= compares them (identical: the same final state, bit for bit; steps_alone: the "
-                      "steps of all runs that the threaded world took on one thread because its team did not pay, "
-                      "the machine's other cores being busy).",
-                      "t"});
+    parser.addOption(
+        {"threads",
+         "Threads for RigidLab's step (default 1). Above 1, each scene is then run again on one thread "
+         "and a line threads scene=... one_thread_median_ms= speedup_median= speedup_mean= identical= "
+         "steps_alone= team_steps= compares them (identical: the same final state, bit for bit; steps_alone: "
+         "the steps of all runs that the threaded world took on one thread because its team did not "
+         "pay, the machine's other cores being busy; team_steps: the steps in which the team shared "
+         "any work, none in a scene too small for it, such as stack20, or asleep).",
+         "t"});
     parser.addOption({"runs",
                       QString("Runs of each engine on each scene (default %1), taking turns; each frame counts at its "
                               "least time over the runs, which all step the same frames, so that another job on the "
@@ -439,6 +444,7 @@ int runBench(const QStringList& arguments) {
                 return true;
             }
             kept.stepsAlone += run.stepsAlone;
+            kept.teamSteps += run.teamSteps;
             kept.broadMs = std::min(kept.broadMs, run.broadMs);
             kept.narrowMs = std::min(kept.narrowMs, run.narrowMs);
             kept.solveMs = std::min(kept.solveMs, run.solveMs);

@@ -51,6 +51,7 @@ enum class Counter {
     PartImbalance,    // bodies by which the larger of the two parts outnumbers the other, summed over the solves of
                       // a whole group with an island cut (World::planCuts())
     StepsAlone,       // steps a world with a team took on one thread, the team not paying (TeamPacer)
+    TeamSteps,        // steps in which a world's team of threads ran at least one job together (ThreadTeam::run())
     Count
 };
 inline constexpr int kCounterCount = static_cast<int>(Counter::Count);

@@ -80,6 +80,7 @@ void ThreadTeam::run(const std::function<void(int)>& job) {
         job(0);
         return;
     }
+    ++m_teamJobs;
     m_job = &job;
     m_unfinished.store(static_cast<uint32_t>(m_size - 1), std::memory_order_relaxed);
     m_jobGeneration.fetch_add(1, std::memory_order_release);

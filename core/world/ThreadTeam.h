@@ -29,6 +29,8 @@ public:
     // Nanoseconds member 0 spent waiting for the others, at barriers and at the end of run(), since the last call;
     // zero for a team of one. The world reads it to see whether the team pays (TeamPacer).
     uint64_t takeLeaderWait() { return std::exchange(m_leaderWaitNs, 0); }
+    // Jobs run() has started on the whole team (a team of one counts none: it runs the job alone). Member 0's count.
+    uint64_t teamJobs() const { return m_teamJobs; }
 
     // [begin, end) split evenly over the members: member k's part.
     static std::pair<size_t, size_t> share(size_t begin, size_t end, int member, int members) {
@@ -52,6 +54,7 @@ private:
     std::atomic<bool> m_stop{false};
     // Written by member 0 only, on a cache line of its own, away from the counters the other members spin on.
     alignas(64) uint64_t m_leaderWaitNs = 0;
+    uint64_t m_teamJobs = 0;
 };
 
 } // namespace rl

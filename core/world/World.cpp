@@ -268,8 +268,12 @@ void World::step() {
         m_team = alone ? nullptr : m_ownTeam.get();
         m_ownTeam->takeLeaderWait(); // only this step's waits count
     }
+    const uint64_t teamJobs = m_ownTeam ? m_ownTeam->teamJobs() : 0;
     stepOnce();
     if (m_ownTeam) {
+        // A step too small for the team (few moving bodies and pairs, or all asleep) runs no job on it.
+        if (m_ownTeam->teamJobs() != teamJobs)
+            m_profile.count(Counter::TeamSteps, 1);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         m_pacer.record(seconds, 1e-9 * static_cast<double>(m_ownTeam->takeLeaderWait()));
         m_team = m_ownTeam.get();
@@ -640,9 +644,14 @@ void World::findAndCollidePairs() {
     // (the solver's set-up and storeImpulses() share the touching contacts out in halves, in pair order too), which
     // the other core would have to fetch from this one's cache. (large_pyramid, frames 60-120 on two threads, seven
     // interleaved runs: 0.65-0.85 ms a step against 0.62-1.09 ms, medians 0.74 and 0.88; 2026-11-27.)
+    //
+    // A step in which few pairs were tested the last time (a scene at rest or asleep: pyramid20 asleep has some 600
+    // pairs and none to test) is collided by member 0 alone, and so are its new pairs if they are few too: a team job
+    // costs the other member a wake-up for nothing. (The frames are the same either way.)
+    const bool fewTests = m_lastPairsTested < kNarrowChunk;
     {
         const size_t pairCount = m_pairContacts.size();
-        const int members = m_team && pairCount >= 2 * kNarrowChunk ? teamSize : 1;
+        const int members = m_team && pairCount >= 2 * kNarrowChunk && !fewTests ? teamSize : 1;
         // One thread takes all the pairs as one chunk: it filters every pair before it collides any, so the fetching
         // ahead runs through the whole list instead of starting again at every chunk. (On one core, ramps'
         // narrowphase medians were the same within this machine's noise either way: 0.81-0.83 and 0.81-0.86 ms,
@@ -697,7 +706,8 @@ void World::findAndCollidePairs() {
     // list, so each member takes an even part of them rather than those in its part of the list.)
     timer.emplace(m_profile, Stage::Narrowphase);
     const size_t pairCount = m_pairContacts.size();
-    const int members = m_team && pairCount >= 2 * kNarrowChunk ? teamSize : 1;
+    const bool fewNew = m_newPairs.size() < kNarrowChunk;
+    const int members = m_team && pairCount >= 2 * kNarrowChunk && !(fewTests && fewNew) ? teamSize : 1;
     const auto list = [&](int member) {
         NarrowList& mine = m_narrowLists[static_cast<size_t>(member)];
         mine.tests.clear();
@@ -739,6 +749,7 @@ void World::findAndCollidePairs() {
         points += l.points;
     }
     m_profile.count(Counter::PairsTested, tested);
+    m_lastPairsTested = tested;
 
     // A touching contact between an awake body and a sleeping one wakes the sleeper's island, in pair order (a woken
     // island can wake the next).

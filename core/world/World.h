@@ -428,6 +428,8 @@ private:
     };
     std::vector<NarrowList> m_narrowLists;
     static constexpr size_t kNarrowChunk = 128; // pairs per claim of the narrowphase's team
+    // Pairs the last step's narrowphase tested (findAndCollidePairs()); the first step counts as busy.
+    uint64_t m_lastPairsTested = std::numeric_limits<uint64_t>::max();
     SolveScratch m_scratch;
     std::vector<SolveScratch> m_memberScratch; // islands shared out: one part per member of the team
     std::vector<SolveScratch> m_runScratch;    // per member: the runs of islands it solves (solveInRuns())

@@ -94,7 +94,26 @@ private slots:
         QCOMPARE(alone[1], QStringLiteral("90"));
         bool ok = false;
         QVERIFY(alone[0].toInt(&ok) >= 0 && ok && alone[0].toInt() <= 90);
+        // The steps in which the team shared work: ramps' 642 cubes have enough pairs for it in every step it took.
+        const QStringList team = f.value("team_steps").split('/');
+        QCOMPARE(team.size(), 2);
+        QCOMPARE(team[1], QStringLiteral("90"));
+        QCOMPARE(team[0].toInt(&ok) + alone[0].toInt(), 90);
+        QVERIFY(ok);
         qInfo("%s", qPrintable(lines[1]));
+    }
+
+    // A scene too small for the team (stack20: 20 cubes, under the team's thresholds of bodies and pairs) steps on
+    // member 0 alone, and the line says so: its speedup is the one thread's, whatever the thread count.
+    void threadsLineSaysWhenTheTeamHadNothingToShare() {
+        const Run r = runCli({"bench", "stack20", "--frames", "20", "--runs", "1", "--threads", "2", "--quiet",
+                              "--no-bullet", "--no-sleep"});
+        QCOMPARE(r.exitCode, 0);
+        const QStringList lines = QString::fromUtf8(r.out).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 2);
+        const QHash<QString, QString> f = fields(lines[1]);
+        QCOMPARE(f.value("identical"), QStringLiteral("yes"));
+        QCOMPARE(f.value("team_steps"), QStringLiteral("0/20"));
     }
 
     // Built with Debian's Bullet (CI installs libbullet-dev), every scene is also stepped in Bullet and the ratio of

@@ -40,6 +40,19 @@ World makeWorld(const Scene& scene, const WorldOptions& options = {}) {
     return std::move(w).value();
 }
 
+// A scene by name: a file under resources/scenes (ending in .obj), "pyramid30", or a library scene.
+std::optional<Scene> namedScene(const QString& scene) {
+    if (scene.endsWith(".obj")) {
+        Result<Scene> imported = importScene(RL_SOURCE_DIR "/resources/scenes/" + scene.toStdString());
+        if (!imported.ok())
+            return std::nullopt;
+        return std::move(imported).value();
+    }
+    if (scene == "pyramid30")
+        return scenes::pyramid(30);
+    return scenes::byName(scene.toStdString());
+}
+
 // A scene stepped with every body kept awake on `threads` threads: its state hash and the counters of the cuts.
 struct CutRun {
     uint64_t hash = 0, cuts = 0, inParts = 0, imbalance = 0;
@@ -371,6 +384,31 @@ private slots:
             QVERIFY(two.profile().counter(Counter::IslandsSharedOut) > 0); // the team did solve
     }
 
+    // The steps in which the team ran a job (Counter::TeamSteps): none for a world of one thread, none for a scene
+    // under the team's thresholds (20 cubes), every step for ramps.obj's 642 cubes while they fall.
+    void teamStepsAreCounted_data() {
+        QTest::addColumn<QString>("scene"); // a library name or a file under resources/scenes
+        QTest::addColumn<int>("threads");
+        QTest::addColumn<int>("teamSteps"); // of 30
+        QTest::newRow("ramps, one thread") << "ramps.obj" << 1 << 0;
+        QTest::newRow("ramps, two threads") << "ramps.obj" << 2 << 30;
+        QTest::newRow("stack20, two threads") << "stack20" << 2 << 0;
+    }
+    void teamStepsAreCounted() {
+        QFETCH(QString, scene);
+        QFETCH(int, threads);
+        QFETCH(int, teamSteps);
+        const std::optional<Scene> s = namedScene(scene);
+        QVERIFY(s.has_value());
+        WorldOptions options;
+        options.threads = threads;
+        options.teamPacing = TeamPacing::Always;
+        World w = makeWorld(*s, options);
+        for (int i = 0; i < 30; ++i)
+            w.step();
+        QCOMPARE(w.profile().counter(Counter::TeamSteps), uint64_t(teamSteps));
+    }
+
     // Where a thread sweeps a part (or a whole group, or its islands) alone, the solver packs the part's levels into
     // full batches (ContactSolver::packPartLevels()): the same updates per body in the same order, so the same frames
     // bit for bit as the levels unpacked (ContactSolver::setPackLevels(false)), in fewer batches: on one thread, with
@@ -390,16 +428,7 @@ private slots:
         QFETCH(int, threads);
         QFETCH(int, frames);
         QFETCH(bool, inParts);
-        std::optional<Scene> s;
-        if (scene.endsWith(".obj")) {
-            Result<Scene> imported = importScene(RL_SOURCE_DIR "/resources/scenes/" + scene.toStdString());
-            QVERIFY(imported.ok());
-            s = std::move(imported).value();
-        } else if (scene == "pyramid30") {
-            s = scenes::pyramid(30);
-        } else {
-            s = scenes::byName(scene.toStdString());
-        }
+        const std::optional<Scene> s = namedScene(scene);
         QVERIFY(s.has_value());
         WorldOptions options;
         options.threads = threads;

@@ -463,6 +463,10 @@
         <translation>kleiner als 2 cm: braucht eventuell mehr Teilschritte</translation>
     </message>
     <message>
+        <source>named as Blender&apos;s legacy OBJ exporter names an object Anchor whose mesh has another name (object_mesh), which the anchor rule makes dynamic: for an anchor, give the mesh the object&apos;s name or export with File &gt; Export &gt; Wavefront (.obj)</source>
+        <translation>so benannt, wie Blenders alter OBJ-Exporter ein Objekt Anchor benennt, dessen Mesh anders heißt (Objekt_Mesh); nach der Anker-Regel ist es damit dynamisch: für einen Anker dem Mesh den Namen des Objekts geben oder mit Datei &gt; Exportieren &gt; Wavefront (.obj) exportieren</translation>
+    </message>
+    <message>
         <source>forced on</source>
         <translation>erzwungen ein</translation>
     </message>

@@ -24,6 +24,21 @@ Error bodyError(const BodyDef& body, std::string message) {
     return e;
 }
 
+// Blender's legacy OBJ exporter (3.4's bpy.ops.export_scene.obj) writes an object whose mesh has another name as
+// "o <object>_<mesh>": a floor renamed "Anchor" in the outliner, its mesh still "Plane", comes out as "Anchor_Plane",
+// which the anchor rule (DESIGN.md §3, the original project's) makes dynamic. Such a dynamic body is told what to do.
+// (One phrase, without the names, so that the editor can translate it: ui/document/CoreText.cpp.)
+constexpr const char* kLegacyAnchorHint =
+    "named as Blender's legacy OBJ exporter names an object Anchor whose mesh has another name (object_mesh), which "
+    "the anchor rule makes dynamic: for an anchor, give the mesh the object's name or export with File > Export > "
+    "Wavefront (.obj)";
+
+bool hasLegacyAnchorName(const BodyDef& body) {
+    const size_t cut = body.name.find('_');
+    return !body.anchor && cut != std::string::npos && cut + 1 < body.name.size() &&
+           isAnchorName(std::string_view(body.name).substr(0, cut));
+}
+
 } // namespace
 
 std::vector<Vec3> shapePoints(const ShapeDef& shape) {
@@ -90,8 +105,10 @@ Result<BodyProperties> computeBodyProperties(const Scene& scene, const BodyDef& 
         localMean /= static_cast<Real>(points.size());
         if (props.hull.dimension == HullDimension::Flat) {
             if (!body.anchor)
-                return bodyError(body, "a dynamic body needs volume, but all its points lie in one plane "
-                                       "(fewer than 4 non-coplanar points); make it an anchor or give it thickness");
+                return bodyError(body, std::string("a dynamic body needs volume, but all its points lie in one plane "
+                                                   "(fewer than 4 non-coplanar points); ") +
+                                           (hasLegacyAnchorName(body) ? std::string("it is ") + kLegacyAnchorHint
+                                                                      : "make it an anchor or give it thickness"));
             props.flat = true;
         } else if (props.hull.dimension != HullDimension::Solid) {
             return bodyError(body, "shape is degenerate (its points lie on a line or at one point): "
@@ -122,6 +139,8 @@ Result<BodyProperties> computeBodyProperties(const Scene& scene, const BodyDef& 
     principalAxes(props.inertia, props.principalMoments, axes);
     props.vertexMean = shapeToWorld(def, localMean);
 
+    if (hasLegacyAnchorName(body))
+        props.warnings.push_back(kLegacyAnchorHint);
     if (!body.anchor && props.volume > 0.0) {
         // Bodies under 2 cm are hard to keep stable at 60 Hz; say so early (the pre-flight check repeats it).
         const Real size = std::cbrt(props.volume);

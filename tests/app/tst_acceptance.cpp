@@ -3,7 +3,7 @@
 // --seconds 10 --csv OUT.csv` at default settings, and each threshold of the table is checked from the CSV
 // alone (plus the OBJ vertices for the lowest point). Re-bakes and 2-thread bakes must hash identically, and the
 // accuracy orders are refitted from `rigidlab-cli accuracy --csv`. The 642-cube ramps scene is in
-// tst_acceptance_slow. Findings are written up in /work/notes/acceptance.md.
+// tst_acceptance_slow.
 #include "data/acceptance/AcceptanceCsv.h"
 
 #include <QJsonArray>
@@ -410,19 +410,18 @@ private slots:
         QCOMPARE(c.bakeHash, a.bakeHash);
     }
 
-    // A floor renamed "Anchor" in Blender (mesh still "Plane") is exported by the 3.4 OBJ exporter as
-    // "o Anchor_Plane". Today it fails to load (IMPORT-1 in /work/notes/acceptance.md); it must at least fail with
-    // a message naming the file and the object, and exit 1.
+    // A floor renamed "Anchor" in Blender (mesh still "Plane") is exported by the 3.4 legacy OBJ exporter as
+    // "o Anchor_Plane", which the anchor rule (DESIGN.md §3, the original project's) makes dynamic, and a dynamic
+    // plane has no volume: the import fails, exit 1, with a message that names the file and the object and says
+    // how to make it an anchor.
     void blenderRenamedFloor() {
         const rl::test::CliRun r = rl::test::runCli({"info", dataPath("tower20_legacy_names.obj")});
         qInfo("tower20_legacy_names.obj: exit %d, %s", r.exitCode, r.err.trimmed().constData());
-        if (r.exitCode == 0) {
-            QVERIFY(r.out.contains("1 anchors")); // once the importer accepts the exporter's form
-            return;
-        }
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("tower20_legacy_names.obj"));
         QVERIFY(r.err.contains("Anchor_Plane"));
+        QVERIFY(r.err.contains("legacy OBJ exporter"));
+        QVERIFY(r.err.contains("give the mesh the object's name"));
     }
 
     // `rigidlab-cli accuracy --csv`: refit the oscillator's convergence orders from the CSV. Expected 1, 1, 2, 4

@@ -341,7 +341,7 @@ private slots:
 
     // The core's body warnings and effect reasons reach the inspector and the World dock through coreText(): every
     // phrase the core can give (all 128 combinations of scene facts, with and without damping, in auto and forced
-    // modes, and the warnings of a concave body and a 1 cm one) has a German translation.
+    // modes, and the warnings of a concave body, a 1 cm one and an Anchor_Cube) has a German translation.
     void corePhrasesAreTranslated() {
         std::set<std::string> phrases;
         for (int bits = 0; bits < 128; ++bits) {
@@ -374,8 +374,11 @@ private slots:
         rl::BodyDef tiny;
         tiny.name = "Tiny";
         tiny.shape.halfExtents = rl::Vec3(0.005);
+        rl::BodyDef legacy; // an "Anchor" floor with its mesh's name, as Blender's legacy OBJ exporter writes it
+        legacy.name = "Anchor_Cube";
+        legacy.shape.halfExtents = rl::Vec3(5.0, 0.5, 5.0);
         size_t warnings = 0;
-        for (const rl::BodyDef& body : {concave, tiny}) {
+        for (const rl::BodyDef& body : {concave, tiny, legacy}) {
             const auto props = rl::computeBodyProperties(scene, body);
             QVERIFY2(props, body.name.c_str());
             for (const std::string& warning : props->warnings) {
@@ -383,7 +386,7 @@ private slots:
                 ++warnings;
             }
         }
-        QVERIFY2(warnings >= 2, "the concave and the 1 cm body should each have a warning");
+        QVERIFY2(warnings >= 3, "the concave, the 1 cm and the Anchor_Cube body should each have a warning");
         QVERIFY(phrases.size() >= 16);
 
         QTranslator translator;

@@ -8,10 +8,14 @@ namespace {
 
 // Every phrase the core can give, listed here for lupdate (the core cannot call tr()). Keep in step with
 // core/scene/BodyProperties.cpp (warnings) and core/world/Effects.cpp (reasons): tst_translations asks the core for
-// every reason (all combinations of scene facts and modes) and both warnings, and checks each has a German translation.
+// every reason (all combinations of scene facts and modes) and every warning, and checks each has a German translation.
 [[maybe_unused]] constexpr const char* kPhrases[] = {
     QT_TRANSLATE_NOOP("rl::CoreText", "concave: simulated as its convex hull"),
     QT_TRANSLATE_NOOP("rl::CoreText", "smaller than 2 cm: may need more substeps"),
+    QT_TRANSLATE_NOOP("rl::CoreText",
+                      "named as Blender's legacy OBJ exporter names an object Anchor whose mesh has another name "
+                      "(object_mesh), which the anchor rule makes dynamic: for an anchor, give the mesh the object's "
+                      "name or export with File > Export > Wavefront (.obj)"),
     QT_TRANSLATE_NOOP("rl::CoreText", "forced on"),
     QT_TRANSLATE_NOOP("rl::CoreText", "forced off"),
     QT_TRANSLATE_NOOP("rl::CoreText", "dynamic bodies and non-zero gravity"),

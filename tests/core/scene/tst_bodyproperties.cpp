@@ -4,6 +4,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace rl;
@@ -195,6 +196,44 @@ private slots:
         QVERIFY(p->concave);
         QCOMPARE(p->warnings.size(), size_t(1));
         QVERIFY(QString::fromStdString(p->warnings[0]).contains("concave"));
+    }
+
+    // Blender's legacy OBJ exporter writes an object renamed "Anchor" whose mesh kept its name as "Anchor_Plane",
+    // which the anchor rule makes dynamic: a box so named gets a warning that says what to do, a flat one an error
+    // that says it. Names the rule makes anchors, or that only start like one, get neither.
+    void legacyExporterAnchorNames_data() {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<bool>("anchor");
+        QTest::addColumn<bool>("hint");
+        QTest::newRow("Anchor_Cube") << "Anchor_Cube" << false << true;
+        QTest::newRow("Anchor.001_Cube.003") << "Anchor.001_Cube.003" << false << true;
+        QTest::newRow("Anchor_ (no mesh name)") << "Anchor_" << false << false;
+        QTest::newRow("Anchorage_Cube") << "Anchorage_Cube" << false << false;
+        QTest::newRow("Cube_Anchor") << "Cube_Anchor" << false << false;
+        QTest::newRow("Anchor_Cube, made an anchor") << "Anchor_Cube" << true << false;
+    }
+    void legacyExporterAnchorNames() {
+        QFETCH(QString, name);
+        QFETCH(bool, anchor);
+        QFETCH(bool, hint);
+        Scene scene;
+        BodyDef box = boxBody(Vec3(0.5), Vec3(0.0), Quat(1, 0, 0, 0));
+        box.name = name.toStdString();
+        box.anchor = anchor;
+        Result<BodyProperties> p = computeBodyProperties(scene, box);
+        QVERIFY(p.ok());
+        const bool warned = std::any_of(p->warnings.begin(), p->warnings.end(), [](const std::string& w) {
+            return w.find("legacy OBJ exporter") != std::string::npos;
+        });
+        QCOMPARE(warned, hint);
+
+        BodyDef plane =
+            meshBody(name.toStdString(), {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}}, {{0, 1, 2}, {0, 2, 3}});
+        plane.anchor = anchor;
+        Result<BodyProperties> flat = computeBodyProperties(scene, plane);
+        QCOMPARE(flat.ok(), anchor);
+        if (!flat.ok())
+            QCOMPARE(QString::fromStdString(flat.error().message).contains("legacy OBJ exporter"), hint);
     }
 };
 

@@ -14,7 +14,8 @@ which take the bodies out of the exported OBJ files ("shape": {"obj": ..., "obje
 
 The legacy OBJ exporter writes "o <object>_<mesh>" when the two names differ, so every object here gets a mesh of
 the same name (as Blender's own primitives do), except in tower20_legacy_names.obj, which keeps the mesh names a
-user gets after renaming only the object (see /work/notes/acceptance.md, IMPORT-1).
+user gets after renaming only the object: "o Anchor_Plane", which the anchor rule makes dynamic (tst_acceptance's
+blenderRenamedFloor).
 """
 
 import json

@@ -66,6 +66,13 @@ private slots:
         QTest::newRow("tower20_zup.fbx") << "tower20_zup.fbx" << 0.01 << 0.01 << 0.05;
         QTest::newRow("tower20.glb") << "tower20.glb" << 0.01 << 0.01 << 0.05;
         QTest::newRow("tower20_2m.obj (Blender's default 2 m cubes)") << "tower20_2m.obj" << 0.01 << 0.01 << 0.05;
+        // As users build it: 10 cm and 5 cm cubes, 1 cm gaps (each cube falls up to 19 cm before it settles), each
+        // cube turned by a random angle and shifted by up to 5 cm, and the tower 500 m from the origin.
+        QTest::newRow("tower20_10cm.obj") << "tower20_10cm.obj" << 0.01 << 0.01 << 0.05;
+        QTest::newRow("tower20_5cm.obj") << "tower20_5cm.obj" << 0.01 << 0.01 << 0.05;
+        QTest::newRow("tower20_gaps.obj") << "tower20_gaps.obj" << 0.01 << 0.01 << 0.25;
+        QTest::newRow("tower20_jitter.obj") << "tower20_jitter.obj" << 0.01 << 0.01 << 0.05;
+        QTest::newRow("tower20_far.obj") << "tower20_far.obj" << 0.01 << 0.01 << 0.05;
         QTest::newRow("tower40.obj") << "tower40.obj" << 0.02 << -1.0 << 0.05;
         QTest::newRow("pyramid20.obj") << "pyramid20.obj" << 0.01 << -1.0 << 0.05;
         QTest::newRow("slab.obj") << "slab.obj" << 0.05 << -1.0 << 0.05;
@@ -99,14 +106,17 @@ private slots:
         }
     }
 
-    // 1 kg under 1,000 kg (Blender cubes with JSON masses, and JSON boxes), and a 1:10:100:1000 ladder: the order
-    // is kept and no contact is more than 1 cm deep at any frame. half: the boxes' half height.
+    // 1 kg under 1,000 kg (Blender cubes with JSON masses, and JSON boxes), a 1:10:100:1000 ladder, 1,000 kg on two 1
+    // kg boxes and 1 kg between two 1,000 kg: the order is kept and no contact is more than 1 cm deep at any frame.
+    // half: the boxes' half height.
     void massRatio_data() {
         QTest::addColumn<QString>("scene");
         QTest::addColumn<double>("half");
         QTest::newRow("mass_ratio.rlscene") << "mass_ratio.rlscene" << 0.25;
         QTest::newRow("mass_pair_boxes.rlscene") << "mass_pair_boxes.rlscene" << 0.5;
         QTest::newRow("mass_ladder.rlscene") << "mass_ladder.rlscene" << 0.25;
+        QTest::newRow("mass_heavy_on_two_light.rlscene") << "mass_heavy_on_two_light.rlscene" << 0.5;
+        QTest::newRow("mass_sandwich.rlscene") << "mass_sandwich.rlscene" << 0.5;
         // The world block of DESIGN.md section 6's example: substeps 4 (the defaults are 6 substeps x 2 iterations).
         QTest::newRow("mass_pair_design_world.rlscene (substeps 4)") << "mass_pair_design_world.rlscene" << 0.25;
     }

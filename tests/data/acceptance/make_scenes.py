@@ -145,6 +145,34 @@ for i in range(20):
     cube("Cube", location=(0, 0, 0.5 + i), rename_mesh=False)
 export_obj("tower20_legacy_names.obj")
 
+# The 20-cube tower at other sizes and as users build it (2026-12-02): 10 cm and 5 cm cubes on a floor plane five
+# tower widths across; unit cubes 1 cm apart, which fall and settle; unit cubes each turned by a random angle about
+# the vertical and shifted by up to 5 cm; and unit cubes 500 m from the origin, on a plane there.
+for size, name in ((0.1, "tower20_10cm.obj"), (0.05, "tower20_5cm.obj")):
+    reset()
+    floor_plane(size=100 * size)
+    for i in range(20):
+        cube("Cube", size=size, location=(0, 0, size * (0.5 + i)))
+    export_obj(name)
+reset()
+floor_plane()
+for i in range(20):
+    cube("Cube", location=(0, 0, 0.5 + 1.01 * i))
+export_obj("tower20_gaps.obj")
+reset()
+floor_plane()
+jitter = __import__("random").Random(3)
+for i in range(20):
+    cube("Cube", location=(jitter.uniform(-0.05, 0.05), jitter.uniform(-0.05, 0.05), 0.5 + i),
+         rotation=(0, 0, jitter.uniform(0, math.pi)))
+export_obj("tower20_jitter.obj")
+reset()
+bpy.ops.mesh.primitive_plane_add(size=20, location=(500, 500, 0))
+named("Anchor")
+for i in range(20):
+    cube("Cube", location=(500, 500, 0.5 + i))
+export_obj("tower20_far.obj")
+
 # Pyramid, base 20 (210 unit cubes), each row shifted by half a cube.
 reset()
 floor_plane(size=40)
@@ -267,6 +295,13 @@ floor = {"name": "Floor", "anchor": True, "shape": {"box": [200, 0.5, 200]}, "po
 write_json("mass_ladder.rlscene", scene([floor] + [
     {"name": "M%d" % m, "shape": {"box": [0.25, 0.25, 0.25]}, "position": [0, 0.25 + 0.5 * i, 0], "mass": m}
     for i, m in enumerate([1.0, 10.0, 100.0, 1000.0])]))
+# Heavy and light in other orders: 1,000 kg on two 1 kg boxes, and a 1 kg box between two 1,000 kg ones.
+write_json("mass_heavy_on_two_light.rlscene", scene([floor] + [
+    {"name": n, "shape": {"box": [0.5, 0.5, 0.5]}, "position": [0, 0.5 + i, 0], "mass": m}
+    for i, (n, m) in enumerate([("Light1", 1.0), ("Light2", 1.0), ("Heavy", 1000.0)])]))
+write_json("mass_sandwich.rlscene", scene([floor] + [
+    {"name": n, "shape": {"box": [0.5, 0.5, 0.5]}, "position": [0, 0.5 + i, 0], "mass": m}
+    for i, (n, m) in enumerate([("Heavy1", 1000.0), ("Light", 1.0), ("Heavy2", 1000.0)])]))
 write_json("mass_pair_boxes.rlscene", scene([floor,
     {"name": "Light", "shape": {"box": [0.5, 0.5, 0.5]}, "position": [0, 0.5, 0], "mass": 1.0},
     {"name": "Heavy", "shape": {"box": [0.5, 0.5, 0.5]}, "position": [0, 1.5, 0], "mass": 1000.0}]))

@@ -55,7 +55,7 @@ struct BenchResult {
     double broadMs = 0.0, narrowMs = 0.0, solveMs = 0.0, otherMs = 0.0;
     uint64_t stateHash = 0;  // FNV-1a over the bits of every body's position and orientation after the run
     uint64_t stepsAlone = 0; // steps a threaded world took on one thread, its team not paying (TeamPacer), all runs
-    uint64_t teamSteps = 0;  // steps in which its team ran any job (too few moving bodies and pairs: none), all runs
+    uint64_t teamSteps = 0;  // steps in which its team ran any job (too few bodies and pairs: none), all runs
 };
 
 // Nearest-rank percentile of sorted values (p in (0, 1]).
@@ -312,7 +312,7 @@ int runBench(const QStringList& arguments) {
          "steps_alone= team_steps= compares them (identical: the same final state, bit for bit; steps_alone: "
          "the steps of all runs that the threaded world took on one thread because its team did not "
          "pay, the machine's other cores being busy; team_steps: the steps in which the team shared "
-         "any work, none in a scene too small for it, such as stack20, or asleep).",
+         "any work, none in a scene too small for it, such as stack20).",
          "t"});
     parser.addOption({"runs",
                       QString("Runs of each engine on each scene (default %1), taking turns; each frame counts at its "

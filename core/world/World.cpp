@@ -271,7 +271,7 @@ void World::step() {
     const uint64_t teamJobs = m_ownTeam ? m_ownTeam->teamJobs() : 0;
     stepOnce();
     if (m_ownTeam) {
-        // A step too small for the team (few moving bodies and pairs, or all asleep) runs no job on it.
+        // A step of a world too small for the team (under its thresholds of bodies and pairs) runs no job on it.
         if (m_ownTeam->teamJobs() != teamJobs)
             m_profile.count(Counter::TeamSteps, 1);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -54,8 +54,9 @@ int runBake(const QStringList& arguments) {
     parser.addOption({"integrator", "explicit-euler, symplectic-euler, verlet or rk4.", "name"});
     parser.addOption({"effects", "auto, none, all, linear-only, or a list such as auto,-sleeping,+ccd.", "list"});
     parser.addOption({"threads",
-                      "Worker threads (results are identical for any count). While other programs keep the "
-                      "machine's cores busy, steps run on one thread (--profile: counter=steps_alone).",
+                      "Worker threads of the simulation and of writing the files (results are identical for "
+                      "any count). While other programs keep the machine's cores busy, steps run on one thread "
+                      "(--profile: counter=steps_alone).",
                       "t"});
     parser.addOption({"profile", "Print per-stage times, the active effects and counters to stdout."});
     parser.addOption({"quiet", "No progress on stderr."});
@@ -177,14 +178,16 @@ int runBake(const QStringList& arguments) {
     }
 
     if (parser.isSet("output")) {
-        Status s = writeBakeFile(bake, parser.value("output").toStdString());
+        Status s = writeBakeFile(bake, parser.value("output").toStdString(), threads);
         if (!s) {
             printError(s.error().toString());
             return kExitFailure;
         }
     }
     if (parser.isSet("csv")) {
-        Status s = writeCsvFile(bake, parser.value("csv").toStdString());
+        CsvOptions csvOptions;
+        csvOptions.threads = threads;
+        Status s = writeCsvFile(bake, parser.value("csv").toStdString(), csvOptions);
         if (!s) {
             printError(s.error().toString());
             return kExitFailure;

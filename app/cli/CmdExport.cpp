@@ -68,6 +68,7 @@ int runExport(const QStringList& arguments) {
     parser.addOption({"bake", "Write a .bake in the current format to <file>.", "file"});
     parser.addOption({"frames", "CSV only: frame range A:B (inclusive), A: or A.", "range"});
     parser.addOption({"bodies", "CSV only: comma-separated body indices or names.", "list"});
+    parser.addOption({"threads", "Threads that format the numbers (the files are the same for any count).", "t"});
     if (const std::optional<int> done = parseArguments(parser, arguments, "export"))
         return *done;
     if (parser.positionalArguments().size() != 1) {
@@ -79,6 +80,14 @@ int runExport(const QStringList& arguments) {
         return kExitUsage;
     }
     CsvOptions csvOptions;
+    if (parser.isSet("threads")) {
+        bool ok = false;
+        csvOptions.threads = parser.value("threads").toInt(&ok);
+        if (!ok || csvOptions.threads < 1) {
+            printError("rigidlab-cli export: bad --threads '" + parser.value("threads") + "' (a positive number)");
+            return kExitUsage;
+        }
+    }
     if (parser.isSet("frames") && !parseFrameRange(parser.value("frames"), csvOptions)) {
         printError("rigidlab-cli export: bad --frames '" + parser.value("frames") + "' (expected A:B, A: or A)");
         return kExitUsage;
@@ -116,7 +125,7 @@ int runExport(const QStringList& arguments) {
     }
     if (parser.isSet("bake")) {
         const std::string out = parser.value("bake").toStdString();
-        Status s = writeBakeFile(bake, out);
+        Status s = writeBakeFile(bake, out, csvOptions.threads);
         if (!s) {
             printError(s.error().toString());
             return kExitFailure;

@@ -3,6 +3,7 @@
 #include "io/AtomicFile.h"
 #include "io/NumberFormat.h"
 #include "io/ObjReader.h"
+#include "io/OrderedBlocks.h"
 #include "scene/BodyDef.h"
 
 #include <algorithm>
@@ -170,7 +171,7 @@ void appendLegacyNumber(std::string& out, float value) {
 
 } // namespace
 
-void writeBake(const Bake& bake, std::ostream& out) {
+void writeBake(const Bake& bake, std::ostream& out, int threads) {
     std::string text = std::string(kHeaderTag) + " " + std::to_string(kBakeFormatVersion) +
                        " fps=" + formatDouble(bake.fps()) + " frames=" + std::to_string(bake.frameCount()) +
                        " bodies=" + std::to_string(bake.bodyCount()) + " columns=" + std::string(kColumns8);
@@ -184,26 +185,35 @@ void writeBake(const Bake& bake, std::ostream& out) {
     if (!obj.empty() && obj.back() != '\n')
         out << '\n';
     out << "!\n";
-    // One buffer per frame keeps memory flat however long the bake is.
-    for (size_t f = 0; f < bake.frameCount(); ++f) {
-        text.clear();
-        for (size_t b = 0; b < bake.bodyCount(); ++b) {
-            const glm::vec3 mean(bake.vertexMean(f, b));
-            const glm::quat& q = bake.rotation(f, b);
-            text += std::to_string(b);
-            for (float v : {mean.x, mean.y, mean.z, q.w, q.x, q.y, q.z}) {
-                text += ' ';
-                appendFloat(text, v);
-            }
-            text += '\n';
-        }
-        out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    }
+    // A buffer per block of frames keeps memory flat however long the bake is; the blocks are formatted on
+    // `threads` threads and written in order.
+    const size_t perBlock = framesPerBlock(bake.bodyCount());
+    const size_t blocks = (bake.frameCount() + perBlock - 1) / perBlock;
+    writeBlocksInOrder(
+        blocks, threads,
+        [&](size_t block, std::string& lines) {
+            const size_t last = std::min(bake.frameCount(), (block + 1) * perBlock);
+            for (size_t f = block * perBlock; f < last; ++f)
+                for (size_t b = 0; b < bake.bodyCount(); ++b) {
+                    const glm::vec3 mean(bake.vertexMean(f, b));
+                    const glm::quat& q = bake.rotation(f, b);
+                    lines += std::to_string(b);
+                    for (float v : {mean.x, mean.y, mean.z, q.w, q.x, q.y, q.z}) {
+                        lines += ' ';
+                        appendFloat(lines, v);
+                    }
+                    lines += '\n';
+                }
+        },
+        [&](const std::string& lines) {
+            out.write(lines.data(), static_cast<std::streamsize>(lines.size()));
+            return true;
+        });
 }
 
-Status writeBakeFile(const Bake& bake, const std::string& path) {
+Status writeBakeFile(const Bake& bake, const std::string& path, int threads) {
     return writeFileAtomically(path, [&](std::ostream& out) -> Status {
-        writeBake(bake, out);
+        writeBake(bake, out, threads);
         return Ok{};
     });
 }

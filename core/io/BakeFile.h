@@ -17,10 +17,11 @@ inline constexpr int kBakeFormatVersion = 2;
 inline constexpr double kLegacyBakeFps = 200.0;
 
 // Streams the bake in our format; numbers are shortest round-trip floats. Positions are vertex means. The reader
-// wants at least one body and one frame, so a Baker refuses an empty scene rather than writing such a file.
-void writeBake(const Bake& bake, std::ostream& out);
+// wants at least one body and one frame, so a Baker refuses an empty scene rather than writing such a file. The
+// numbers are formatted on `threads` threads (writeBlocksInOrder()); the bytes are the same for any count.
+void writeBake(const Bake& bake, std::ostream& out, int threads = 1);
 // Atomic: a failed write leaves an existing file untouched.
-Status writeBakeFile(const Bake& bake, const std::string& path);
+Status writeBakeFile(const Bake& bake, const std::string& path, int threads = 1);
 
 // The original project's flavour: optionally the OBJ part and '!', then object-major `id x y z` with %g numbers
 // and CRLF line ends. Rotations are lost, as they were in the original.

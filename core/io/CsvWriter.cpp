@@ -2,6 +2,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/NumberFormat.h"
+#include "io/OrderedBlocks.h"
 
 #include <algorithm>
 
@@ -62,35 +63,56 @@ Status writeCsv(const Bake& bake, std::ostream& out, const CsvOptions& options) 
         names[b] = csvField(bake.body(b).name);
 
     out << kCsvHeader << '\n';
+    const size_t first = options.firstFrame;
     const size_t last = std::min(options.lastFrame, bake.frameCount() - 1);
-    std::string rows;
-    for (size_t f = options.firstFrame; f <= last; ++f) {
-        rows.clear();
-        const std::string frame = std::to_string(f) + ',' + formatDouble(bake.frameTime(f)) + ',';
-        for (size_t b : bodies) {
-            rows += frame;
-            rows += std::to_string(b);
-            rows += ',';
-            rows += names[b];
-            rows += bake.body(b).anchor ? ",1" : ",0";
-            appendVec(rows, bake.position(f, b));
-            const glm::quat& q = bake.rotation(f, b);
-            for (float v : {q.w, q.x, q.y, q.z}) {
-                rows += ',';
-                appendFloat(rows, v);
+    const size_t frames = last - first + 1;
+    // Blocks of frames formatted on options.threads threads, written in order: the same bytes for any count.
+    const size_t perBlock = framesPerBlock(bodies.size());
+    const size_t blocks = (frames + perBlock - 1) / perBlock;
+    size_t done = 0; // frames written
+    const bool completed = writeBlocksInOrder(
+        blocks, options.threads,
+        [&](size_t block, std::string& rows) {
+            const size_t end = first + std::min(frames, (block + 1) * perBlock);
+            for (size_t f = first + block * perBlock; f < end; ++f) {
+                const std::string frame = std::to_string(f) + ',' + formatDouble(bake.frameTime(f)) + ',';
+                for (size_t b : bodies) {
+                    rows += frame;
+                    rows += std::to_string(b);
+                    rows += ',';
+                    rows += names[b];
+                    rows += bake.body(b).anchor ? ",1" : ",0";
+                    appendVec(rows, bake.position(f, b));
+                    const glm::quat& q = bake.rotation(f, b);
+                    for (float v : {q.w, q.x, q.y, q.z}) {
+                        rows += ',';
+                        appendFloat(rows, v);
+                    }
+                    if (bake.hasVelocities()) {
+                        appendVec(rows, bake.linearVelocity(f, b));
+                        appendVec(rows, bake.angularVelocity(f, b));
+                    } else {
+                        rows += ",,,,,,";
+                    }
+                    rows += '\n';
+                }
             }
-            if (bake.hasVelocities()) {
-                appendVec(rows, bake.linearVelocity(f, b));
-                appendVec(rows, bake.angularVelocity(f, b));
-            } else {
-                rows += ",,,,,,";
+        },
+        [&](const std::string& rows) {
+            out.write(rows.data(), static_cast<std::streamsize>(rows.size()));
+            // Progress as before the rows were formatted in blocks: after each frame's rows.
+            const size_t end = std::min(frames, done + perBlock);
+            if (!options.progress) {
+                done = end;
+                return true;
             }
-            rows += '\n';
-        }
-        out.write(rows.data(), static_cast<std::streamsize>(rows.size()));
-        if (options.progress && !options.progress(f - options.firstFrame + 1, last - options.firstFrame + 1))
-            return Error{{}, 0, {}, "export cancelled"};
-    }
+            while (done < end)
+                if (!options.progress(++done, frames))
+                    return false;
+            return true;
+        });
+    if (!completed)
+        return Error{{}, 0, {}, "export cancelled"};
     return Ok{};
 }
 

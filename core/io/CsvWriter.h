@@ -24,6 +24,8 @@ struct CsvOptions {
     // Called after each frame's rows with (frames written, frames in the range); returning false cancels the export
     // with an Error, and writeCsvFile then leaves the target as it was.
     std::function<bool(size_t, size_t)> progress;
+    // Threads that format the rows (the bytes are the same for any count); progress is called on the caller's thread.
+    int threads = 1;
 };
 
 // A field as RFC 4180 wants it: unchanged, or in double quotes with inner quotes doubled when it contains a comma,

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <ostream>
 #include <streambuf>
+#include <thread>
 
 namespace rl {
 
@@ -45,6 +46,12 @@ private:
     const std::function<bool(size_t, size_t)>& m_progress;
 };
 
+// An export runs while the interface only shows its progress, so every core formats numbers (the file is the same
+// for any count).
+int exportThreads() {
+    return std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 8);
+}
+
 } // namespace
 
 Status runExport(const Bake& bake, const ExportRequest& request, const std::function<bool(size_t, size_t)>& progress) {
@@ -55,6 +62,7 @@ Status runExport(const Bake& bake, const ExportRequest& request, const std::func
         options.firstFrame = request.firstFrame;
         options.lastFrame = request.lastFrame;
         options.progress = progress;
+        options.threads = exportThreads();
         return writeCsvFile(bake, path, options);
     }
     if (bake.bodyCount() == 0 || bake.frameCount() == 0)
@@ -70,7 +78,7 @@ Status runExport(const Bake& bake, const ExportRequest& request, const std::func
         // The stream turns an exception from its buffer into badbit; with badbit in exceptions() it rethrows ours.
         counted.exceptions(std::ios::badbit);
         try {
-            writeBake(bake, counted);
+            writeBake(bake, counted, exportThreads());
         } catch (const ProgressBuffer::Cancelled&) {
             return Error{path, 0, {}, "export cancelled"};
         }

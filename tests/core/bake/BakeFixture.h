@@ -86,4 +86,31 @@ inline Bake makeFixtureBake(size_t frames, double fps) {
     return bake;
 }
 
+// A bake of many bodies with no OBJ part, each moving and turning on its own, every number different: for the
+// writers that split their output into blocks of frames (framesPerBlock()).
+inline Bake makeMovingBake(size_t bodies, size_t frames) {
+    std::vector<BakeBodyInfo> infos(bodies);
+    for (size_t b = 0; b < bodies; ++b) {
+        infos[b].name = "Body " + std::to_string(b) + (b % 5 == 0 ? ", quoted" : "");
+        infos[b].anchor = b % 17 == 0;
+        infos[b].vertexMeanOffset = Vec3(0.001 * double(b % 7), -0.002 * double(b % 3), 0.0);
+    }
+    Bake bake(std::move(infos), 60.0);
+    bake.reserveFrames(frames);
+    for (size_t f = 0; f < frames; ++f) {
+        bake.addFrame();
+        const double t = bake.frameTime(f);
+        for (size_t b = 0; b < bodies; ++b) {
+            const double k = 1.0 + 0.013 * double(b);
+            BakeBodyState s;
+            s.position = glm::vec3(Vec3(0.37 * double(b), 10.0 - 4.905 * t * t * k, std::sin(t * k)));
+            s.linearVelocity = glm::vec3(Vec3(0.0, -9.81 * t * k, k * std::cos(t * k)));
+            s.rotation = glm::quat(glm::angleAxis(k * t, glm::normalize(Vec3(0.2, 1.0, 0.1 * double(b % 4)))));
+            s.angularVelocity = glm::vec3(Vec3(0.0, k, 0.0));
+            bake.setState(f, b, s);
+        }
+    }
+    return bake;
+}
+
 } // namespace rl::test

@@ -279,6 +279,34 @@ private slots:
         QVERIFY(errors > 100);
     }
 
+    // Frames formatted on several threads are the same bytes as on one (eight blocks of 27 frames), and read back.
+    void threadsWriteTheSameBytes_data() {
+        QTest::addColumn<int>("threads");
+        for (int threads : {2, 3, 8})
+            QTest::addRow("%d threads", threads) << threads;
+    }
+    void threadsWriteTheSameBytes() {
+        QFETCH(int, threads);
+        const Bake bake = test::makeMovingBake(300, 200);
+        std::ostringstream one, many;
+        writeBake(bake, one, 1);
+        writeBake(bake, many, threads);
+        QVERIFY(one.str().size() > 1000);
+        QVERIFY(many.str() == one.str());
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("threads.bake").toStdString();
+        QVERIFY(writeBakeFile(bake, path, threads).ok());
+        Result<Bake> back = readBakeFile(path);
+        QVERIFY(back.ok());
+        QCOMPARE(back->frameCount(), size_t(200));
+        for (size_t f : {size_t(0), size_t(26), size_t(27), size_t(199)})
+            for (size_t b : {size_t(0), size_t(1), size_t(299)}) {
+                const glm::vec3 mean(bake.vertexMean(f, b));
+                QCOMPARE(glm::vec3(back->vertexMean(f, b)), mean);
+                QCOMPARE(back->rotation(f, b), bake.rotation(f, b));
+            }
+    }
+
     // 100 frames of 2,000 bodies through the streaming writer and back, well within a test's time budget.
     void largeBakeStreams() {
         const size_t bodies = 2000, frames = 100;

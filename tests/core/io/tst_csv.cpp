@@ -10,6 +10,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 using namespace rl;
 
@@ -210,6 +211,77 @@ private slots:
                 QVERIFY(rows[r][c].empty());
             QVERIFY(!rows[r][5].empty());
         }
+    }
+
+    // Rows formatted on several threads (CsvOptions::threads) are the same bytes as on one: a bake of 300 bodies and
+    // 200 frames is eight blocks of 27 frames (framesPerBlock()) whole, and four blocks of 54 frames as a subset of
+    // 150 bodies (every other one, last first) over a range of 171 frames.
+    void threadsWriteTheSameBytes_data() {
+        QTest::addColumn<int>("threads");
+        QTest::addColumn<bool>("subset");
+        for (int threads : {2, 3, 8})
+            for (bool subset : {false, true})
+                QTest::addRow("%d threads%s", threads, subset ? ", subset and range" : "") << threads << subset;
+    }
+    void threadsWriteTheSameBytes() {
+        QFETCH(int, threads);
+        QFETCH(bool, subset);
+        const Bake bake = test::makeMovingBake(300, 200);
+        CsvOptions options;
+        if (subset) {
+            for (size_t b = 300; b >= 2; b -= 2)
+                options.bodies.push_back(b - 1);
+            options.firstFrame = 20;
+            options.lastFrame = 190;
+        }
+        const std::string one = toCsv(bake, options);
+        options.threads = threads;
+        const std::string many = toCsv(bake, options);
+        QVERIFY(one.size() > 1000);
+        QCOMPARE(many.size(), one.size());
+        QVERIFY(many == one);
+    }
+
+    // Progress comes on the calling thread, in order, up to the whole range; returning false cancels the export
+    // with an error, and the file is left as it was.
+    void progressAndCancel_data() {
+        QTest::addColumn<int>("threads");
+        for (int threads : {1, 2, 4})
+            QTest::addRow("%d threads", threads) << threads;
+    }
+    void progressAndCancel() {
+        QFETCH(int, threads);
+        const Bake bake = test::makeMovingBake(300, 200);
+        std::vector<std::pair<size_t, size_t>> calls;
+        bool onCaller = true;
+        const std::thread::id caller = std::this_thread::get_id();
+        CsvOptions options;
+        options.threads = threads;
+        options.progress = [&](size_t done, size_t total) {
+            calls.emplace_back(done, total);
+            onCaller = onCaller && std::this_thread::get_id() == caller;
+            return true;
+        };
+        QVERIFY(!toCsv(bake, options).starts_with("ERROR"));
+        QVERIFY(onCaller);
+        QCOMPARE(calls.size(), size_t(200)); // one a frame
+        for (size_t k = 0; k < calls.size(); ++k)
+            QCOMPARE(calls[k], std::make_pair(k + 1, size_t(200)));
+
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("cancelled.csv").toStdString();
+        {
+            std::ofstream before(path);
+            before << "kept\n";
+        }
+        options.progress = [](size_t done, size_t) { return done < 50; };
+        const Status s = writeCsvFile(bake, path, options);
+        QVERIFY(!s.ok());
+        QVERIFY2(s.error().message.find("cancelled") != std::string::npos, s.error().toString().c_str());
+        std::ifstream in(path);
+        std::stringstream kept;
+        kept << in.rdbuf();
+        QCOMPARE(kept.str(), std::string("kept\n"));
     }
 
     void writesFile() {

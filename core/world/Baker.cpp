@@ -16,16 +16,19 @@ Bake startBake(const World& world, bool diagnostics) {
     return bake;
 }
 
-void recordFrame(const World& world, Bake& bake) {
+void recordFrame(const World& world, Bake& bake, const ContactSolver::ParallelFor& parallelFor) {
     const size_t frame = bake.addFrame();
-    for (size_t i = 0; i < world.bodyCount(); ++i) {
-        BakeBodyState s;
-        s.position = glm::vec3(world.centerOfMass(i));
-        s.rotation = glm::quat(world.rotationSinceStart(i));
-        s.linearVelocity = glm::vec3(world.linearVelocity(i));
-        s.angularVelocity = glm::vec3(world.angularVelocity(i));
-        bake.setState(frame, i, s);
-    }
+    // Each body's entry alone, so the frame is the same on any number of threads.
+    shareOut(parallelFor, world.bodyCount(), [&](size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            BakeBodyState s;
+            s.position = glm::vec3(world.centerOfMass(i));
+            s.rotation = glm::quat(world.rotationSinceStart(i));
+            s.linearVelocity = glm::vec3(world.linearVelocity(i));
+            s.angularVelocity = glm::vec3(world.angularVelocity(i));
+            bake.setState(frame, i, s);
+        }
+    });
     if (bake.hasDiagnostics()) {
         const FrameDiagnostics d = world.diagnostics();
         bake.setDiagnostic(frame, BakeDiagnostic::KineticEnergy, static_cast<float>(d.kineticEnergy));
@@ -45,7 +48,7 @@ bool bakeRun(World& world, Bake& bake, const BakeRequest& request) {
             world.step();
         {
             StageTimer t(world.mutableProfile(), Stage::StoreFrame);
-            recordFrame(world, bake);
+            recordFrame(world, bake, world.betweenStepsParallelFor(world.bodyCount()));
         }
         if (request.progress && !request.progress(f + 1, request.frames))
             return false;

@@ -22,8 +22,9 @@ struct BakeRequest {
 
 // Body info and frame 0 of a bake for the world's current state.
 Bake startBake(const World& world, bool diagnostics = true);
-// Appends the world's current state as the next frame.
-void recordFrame(const World& world, Bake& bake);
+// Appends the world's current state as the next frame; parallelFor (World::betweenStepsParallelFor()), if given,
+// shares the bodies out. The frame is the same either way.
+void recordFrame(const World& world, Bake& bake, const ContactSolver::ParallelFor& parallelFor = {});
 // Steps the world `frames` times, recording each frame. Returns false when cancelled (the bake keeps its frames).
 bool bakeRun(World& world, Bake& bake, const BakeRequest& request);
 

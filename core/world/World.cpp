@@ -388,6 +388,15 @@ ContactSolver::ParallelFor World::teamParallelFor() {
     };
 }
 
+ContactSolver::ParallelFor World::betweenStepsParallelFor(size_t count) {
+    // Between steps m_team is m_ownTeam (step()); whether the next step will take the team decides here too, so
+    // that a machine whose other core is busy does not make the record wait for it.
+    const bool pays = m_teamPacing != TeamPacing::Adaptive || m_pacer.useTeam();
+    if (!m_ownTeam || !pays || count < kMinBodiesForTeam)
+        return {};
+    return teamParallelFor();
+}
+
 void World::mergePairs(const BroadPhase::ParallelFor& parallelFor) {
     m_broadPhase.updatePairs(parallelFor);
     const auto pairs = m_broadPhase.pairs();

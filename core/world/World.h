@@ -190,6 +190,11 @@ public:
     // Wakes every body (after an edit from outside, for example).
     void wakeAll();
 
+    // For per-body work between steps (the Baker's record of a frame): shares [0, count) out over the world's team
+    // when it has one, the last steps found it paying (TeamPacer) and count is large enough to pay for a team job;
+    // empty otherwise, and then the caller loops alone. Work on each body alone gives the same results either way.
+    ContactSolver::ParallelFor betweenStepsParallelFor(size_t count);
+
     const BodyState& state() const { return m_state; }
 
 private:

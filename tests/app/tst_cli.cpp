@@ -32,6 +32,9 @@ private slots:
         QTest::newRow("info unknown option") << QStringList{"info", "--bogus", "x.obj"} << 2;
         QTest::newRow("export help") << QStringList{"export", "--help"} << 0;
         QTest::newRow("export without input") << QStringList{"export"} << 2;
+        QTest::newRow("export with --threads 0")
+            << QStringList{"export", RL_TEST_DATA_DIR "/formats/legacy_fall.bake", "--csv", "x.csv", "--threads", "0"}
+            << 2;
     }
     void usage() {
         QFETCH(QStringList, args);
@@ -130,6 +133,29 @@ private slots:
         // Frame 0 of the cube: its centre of mass, (0.25, 2.25, 0.25); the anchor flag comes from the OBJ part.
         QVERIFY2(lines[2].startsWith("0,0,1,Cube.002,0,0.25,2.25,0.25,1,0,0,0"), lines[2].constData());
         QVERIFY2(lines[1].startsWith("0,0,0,Anchor,1,"), lines[1].constData());
+    }
+
+    // export --threads formats on several threads and writes the same bytes as one thread: 31 frames of ramps.obj's
+    // 646 bodies are three blocks of frames.
+    void exportOnThreadsWritesTheSameFiles() {
+        QTemporaryDir dir;
+        const QString legacy = dir.filePath("ramps.bake");
+        const Run baked =
+            runCli({"bake", RL_SOURCE_DIR "/resources/scenes/ramps.obj", "--frames", "30", "-o", legacy, "--quiet"});
+        QVERIFY2(baked.exitCode == 0, baked.err.constData());
+        QByteArray csv[2], bake[2];
+        for (int k = 0; k < 2; ++k) {
+            const QString c = dir.filePath(QString("%1.csv").arg(k)), b = dir.filePath(QString("%1.bake").arg(k));
+            const Run r = runCli({"export", legacy, "--csv", c, "--bake", b, "--threads", k == 0 ? "1" : "3"});
+            QVERIFY2(r.exitCode == 0, r.err.constData());
+            QFile fc(c), fb(b);
+            QVERIFY(fc.open(QIODevice::ReadOnly) && fb.open(QIODevice::ReadOnly));
+            csv[k] = fc.readAll();
+            bake[k] = fb.readAll();
+        }
+        QCOMPARE(csv[0].count('\n'), 31 * 646 + 1);
+        QVERIFY(csv[1] == csv[0]);
+        QVERIFY(bake[1] == bake[0]);
     }
 
     void exportSubsetOfBodiesAndFrames() {

@@ -167,6 +167,7 @@ int runBake(const QStringList& arguments) {
         return true;
     };
     bakeRun(world, bake, request);
+    const qint64 bakeMs = clock.elapsed();
 
     for (size_t i = 0; i < world.bodyCount(); ++i) {
         const Vec3 p = world.centerOfMass(i);
@@ -215,12 +216,17 @@ int runBake(const QStringList& arguments) {
                     .arg(clamps.angular);
         printOut(text);
     }
-    if (!quiet)
-        printError(QString("baked %1 frames of %2 bodies in %3 s (%4 ms/step)")
+    if (!quiet) {
+        QString written;
+        if (parser.isSet("output") || parser.isSet("csv"))
+            written = QString(", wrote the files in %1 s").arg((clock.elapsed() - bakeMs) / 1000.0, 0, 'f', 2);
+        printError(QString("baked %1 frames of %2 bodies in %3 s (%4 ms/step)%5")
                        .arg(frameCount)
                        .arg(world.bodyCount())
-                       .arg(clock.elapsed() / 1000.0, 0, 'f', 2)
-                       .arg(frameCount > 0 ? static_cast<double>(clock.elapsed()) / frameCount : 0.0, 0, 'f', 3));
+                       .arg(bakeMs / 1000.0, 0, 'f', 2)
+                       .arg(frameCount > 0 ? static_cast<double>(bakeMs) / frameCount : 0.0, 0, 'f', 3)
+                       .arg(written));
+    }
     return kExitOk;
 }
 

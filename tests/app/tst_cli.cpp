@@ -4,6 +4,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -233,6 +234,19 @@ private slots:
         QFile c(csv);
         QVERIFY(c.open(QIODevice::ReadOnly));
         QCOMPARE(c.readAll().trimmed().split('\n').size(), 1 + 31 * 11);
+
+        // Without --quiet, the closing line says how long the bake and the files took; with no files, only the bake.
+        Run loud = runCli({"bake", scenePath("stack.obj"), "-o", bake, "--frames", "30", "--threads", "2"});
+        QVERIFY2(loud.exitCode == 0, loud.err.constData());
+        QVERIFY2(
+            QRegularExpression("baked 30 frames of 11 bodies in [0-9.]+ s \\([0-9.]+ ms/step\\), wrote the files in "
+                               "[0-9.]+ s\n$")
+                .match(QString::fromUtf8(loud.err))
+                .hasMatch(),
+            loud.err.constData());
+        loud = runCli({"bake", scenePath("stack.obj"), "--frames", "30"});
+        QVERIFY2(loud.exitCode == 0, loud.err.constData());
+        QVERIFY2(loud.err.contains("ms/step)\n") && !loud.err.contains("wrote"), loud.err.constData());
     }
 
     void bakeBadOptions_data() {

@@ -477,6 +477,20 @@ private:
 void shareOut(const ContactSolver::ParallelFor& parallelFor, size_t count,
               const std::function<void(size_t, size_t)>& body);
 
+// Sorts [first, last) stably, in place, by insertion: the order std::stable_sort gives with the same comparison,
+// without the heap buffer it takes on every call. For a manifold's points (at most four): with std::stable_sort, the
+// set-up of boxes1000 on two threads called malloc and free some 70 times a step for them (2026-12-04).
+template <class T, class Less>
+void stableSortSmall(T* first, T* last, Less less) {
+    for (T* i = first + (first != last ? 1 : 0); i < last; ++i) {
+        const T value = *i;
+        T* j = i;
+        for (; j != first && less(value, *(j - 1)); --j)
+            *j = *(j - 1);
+        *j = value;
+    }
+}
+
 // Two unit tangents orthogonal to n, chosen deterministically.
 void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2);
 

@@ -971,8 +971,8 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
             order[static_cast<size_t>(k)] = static_cast<uint8_t>(k);
         m_laneOf[i] = static_cast<uint32_t>(b * W + l);
         if (impact[l] != 0)
-            std::stable_sort(order.begin(), order.begin() + m.pointCount,
-                             [&](uint8_t x, uint8_t y) { return m.points[x].separation < m.points[y].separation; });
+            stableSortSmall(order.data(), order.data() + m.pointCount,
+                            [&](uint8_t x, uint8_t y) { return m.points[x].separation < m.points[y].separation; });
         if (m_kept) {
             m_constraints[i] = record(l);
         } else if (m_bounceOnly && restitution[l] != 0.0) {

@@ -235,6 +235,30 @@ bool sameImpulses(const std::vector<Manifold>& a, const std::vector<Manifold>& b
 class TestContactSolver : public QObject {
     Q_OBJECT
 private slots:
+    // stableSortSmall() (a manifold's points deepest first, the levels' short runs) gives std::stable_sort's order:
+    // random runs of 0 to 40 values with many ties, each value carrying its place so that a tie out of order shows.
+    void stableSortSmallMatchesStableSort_data() {
+        QTest::addColumn<int>("length");
+        for (int length : {0, 1, 2, 3, 4, 7, 23, 24, 40})
+            QTest::addRow("%d values", length) << length;
+    }
+    void stableSortSmallMatchesStableSort() {
+        QFETCH(int, length);
+        std::mt19937 random(static_cast<unsigned>(length) * 7919u + 1u);
+        for (int trial = 0; trial < 200; ++trial) {
+            std::vector<std::pair<int, int>> values(static_cast<size_t>(length));
+            for (int i = 0; i < length; ++i)
+                values[static_cast<size_t>(i)] = {static_cast<int>(random() % 4), i};
+            const auto less = [](const std::pair<int, int>& a, const std::pair<int, int>& b) {
+                return a.first < b.first;
+            };
+            std::vector<std::pair<int, int>> expected = values;
+            std::stable_sort(expected.begin(), expected.end(), less);
+            stableSortSmall(values.data(), values.data() + values.size(), less);
+            QVERIFY(values == expected);
+        }
+    }
+
     void levelsKeepTheSequentialOrder_data() {
         QTest::addColumn<int>("bodies");
         QTest::addColumn<int>("constraints");

@@ -42,6 +42,7 @@ bool writeBlocksInOrder(size_t count, int threads, const std::function<void(size
     size_t nextBlock = 0; // the next block to format
     size_t written = 0;   // blocks written so far
     bool stop = false;
+    bool cancelled = false;     // a write() returned false
     std::exception_ptr failure; // the first exception of a format() or write(), rethrown once the workers are done
     std::mutex mutex;
     std::condition_variable changed;
@@ -122,11 +123,12 @@ bool writeBlocksInOrder(size_t count, int threads, const std::function<void(size
             ++written;
             if (error && !failure)
                 failure = error;
+            cancelled = cancelled || !ok;
             stop = stop || !ok;
         }
         changed.notify_all();
     }
-    const bool completed = written == count;
+    const bool completed = written == count && !cancelled;
     {
         // Cancelled or failed: the workers stop at their next block.
         std::lock_guard lock(mutex);

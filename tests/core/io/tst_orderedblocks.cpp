@@ -104,16 +104,20 @@ private slots:
     }
 
     // write() returning false stops everything: nothing is written after it, few blocks are formatted after it, and
-    // the call says so.
+    // the call says so, also when it is the last block that is refused.
     void cancelStops_data() {
         QTest::addColumn<int>("threads");
+        QTest::addColumn<int>("refused"); // of 1,000 blocks
         for (int threads : {1, 2, 4})
-            QTest::addRow("%d threads", threads) << threads;
+            for (int refused : {4, 999})
+                QTest::addRow("%d threads, block %d refused", threads, refused) << threads << refused;
     }
     void cancelStops() {
         QFETCH(int, threads);
+        QFETCH(int, refused);
         std::atomic<size_t> formatted{0};
         size_t writes = 0;
+        const std::string prefix = std::to_string(refused) + ':';
         const bool completed = writeBlocksInOrder(
             1000, threads,
             [&](size_t block, std::string& text) {
@@ -122,11 +126,11 @@ private slots:
             },
             [&](const std::string& text) {
                 ++writes;
-                return text.rfind("4:", 0) != 0; // refuses block 4
+                return text.rfind(prefix, 0) != 0;
             });
         QVERIFY(!completed);
-        QCOMPARE(writes, size_t(5));
-        QVERIFY(formatted.load() <= 5 + 2 * static_cast<size_t>(threads));
+        QCOMPARE(writes, static_cast<size_t>(refused) + 1);
+        QVERIFY(formatted.load() <= static_cast<size_t>(refused) + 1 + 2 * static_cast<size_t>(threads));
     }
 
     // An exception thrown by format() or write() reaches the caller, once every thread has ended.

@@ -14,8 +14,8 @@ namespace rl {
 
 namespace {
 
-// writeBake() has no progress hook, but it hands over one frame at a time: this buffer passes the bytes on,
-// counts the lines that went through, and throws to stop the writer when the user cancels.
+// writeBake() has no progress hook, but it hands over a block of some 8,192 lines at a time: this buffer passes the
+// bytes on, counts the lines that went through, and throws to stop the writer when the user cancels.
 class ProgressBuffer : public std::streambuf {
 public:
     struct Cancelled {};

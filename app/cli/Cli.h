@@ -28,6 +28,10 @@ int runDiff(const QStringList& arguments);
 // parser's message on stderr; --help: 0, with the help on stdout), or nothing when the command should go on.
 std::optional<int> parseArguments(QCommandLineParser& parser, const QStringList& arguments, const char* command);
 
+// An option that takes a whole number above 0: false when it is set to anything else; `out` is left alone when the
+// option is not set.
+bool parsePositiveInt(const QCommandLineParser& parser, const QString& name, int& out);
+
 // Messages for people go to stderr; data goes to stdout or files.
 void printError(const QString& message);
 void printError(const std::string& message);

@@ -25,14 +25,6 @@ bool parsePositive(const QCommandLineParser& parser, const QString& name, double
     return ok && std::isfinite(out) && out > 0.0;
 }
 
-bool parsePositiveInt(const QCommandLineParser& parser, const QString& name, int& out) {
-    if (!parser.isSet(name))
-        return true;
-    bool ok = false;
-    out = parser.value(name).toInt(&ok);
-    return ok && out > 0;
-}
-
 } // namespace
 
 int runBake(const QStringList& arguments) {

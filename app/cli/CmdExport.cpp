@@ -80,13 +80,9 @@ int runExport(const QStringList& arguments) {
         return kExitUsage;
     }
     CsvOptions csvOptions;
-    if (parser.isSet("threads")) {
-        bool ok = false;
-        csvOptions.threads = parser.value("threads").toInt(&ok);
-        if (!ok || csvOptions.threads < 1) {
-            printError("rigidlab-cli export: bad --threads '" + parser.value("threads") + "' (a positive number)");
-            return kExitUsage;
-        }
+    if (!parsePositiveInt(parser, "threads", csvOptions.threads)) {
+        printError("rigidlab-cli export: bad --threads '" + parser.value("threads") + "' (a positive number)");
+        return kExitUsage;
     }
     if (parser.isSet("frames") && !parseFrameRange(parser.value("frames"), csvOptions)) {
         printError("rigidlab-cli export: bad --frames '" + parser.value("frames") + "' (expected A:B, A: or A)");

@@ -26,6 +26,14 @@ std::optional<int> parseArguments(QCommandLineParser& parser, const QStringList&
     return std::nullopt;
 }
 
+bool parsePositiveInt(const QCommandLineParser& parser, const QString& name, int& out) {
+    if (!parser.isSet(name))
+        return true;
+    bool ok = false;
+    out = parser.value(name).toInt(&ok);
+    return ok && out > 0;
+}
+
 void printError(const std::string& message) {
     printError(QString::fromStdString(message));
 }

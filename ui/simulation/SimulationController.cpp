@@ -614,7 +614,7 @@ bool SimulationController::startBake(int lastFrame, int firstFrame) {
     // A bake gives the same frames on any number of threads, so it takes every core. It used to leave one to the
     // interface, which on a two-core machine meant one thread; the world's TeamPacer now steps alone while another
     // thread (a repaint, another program) keeps a core busy. A 10 s bake of ramps.obj in the editor took 0.46-0.76 s
-    // on two threads against 0.70-1.01 s on one (medians 0.53 and 0.90 s; ten bakes each in two rounds by turns,
+    // on two threads against 0.70-1.01 s on one (medians 0.53 and 0.92 s; ten bakes each in two rounds by turns,
     // 2026-12-04, under Xvfb), and the interface's 20 ms timer still ticked 148 times in 3 s of a bake with a worst
     // gap of 40 ms (tst_simulation).
     WorldOptions bakeOptions;

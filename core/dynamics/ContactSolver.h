@@ -478,8 +478,9 @@ void shareOut(const ContactSolver::ParallelFor& parallelFor, size_t count,
               const std::function<void(size_t, size_t)>& body);
 
 // Sorts [first, last) stably, in place, by insertion: the order std::stable_sort gives with the same comparison,
-// without the heap buffer it takes on every call. For a manifold's points (at most four): with std::stable_sort, the
-// set-up of boxes1000 on two threads called malloc and free some 70 times a step for them (2026-12-04).
+// without the heap buffer it takes on every call. For short runs: a manifold's points (at most four; with
+// std::stable_sort, the set-up of boxes1000 on two threads called malloc and free some 70 times a step for them,
+// 2026-12-04) and the short levels of sortByKey() (ContactSolver.cpp).
 template <class T, class Less>
 void stableSortSmall(T* first, T* last, Less less) {
     for (T* i = first + (first != last ? 1 : 0); i < last; ++i) {

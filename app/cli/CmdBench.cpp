@@ -5,6 +5,7 @@
 #include "Cli.h"
 #include "io/SceneImport.h"
 #include "scene/SceneLibrary.h"
+#include "world/CoreRoundTrip.h"
 #include "world/World.h"
 
 #include <QCommandLineParser>
@@ -56,6 +57,7 @@ struct BenchResult {
     uint64_t stateHash = 0;  // FNV-1a over the bits of every body's position and orientation after the run
     uint64_t stepsAlone = 0; // steps a threaded world took on one thread, its team not paying (TeamPacer), all runs
     uint64_t teamSteps = 0;  // steps in which its team ran any job (too few bodies and pairs: none), all runs
+    std::vector<double> roundTripNs; // the core round trip before each threaded run (measureCoreRoundTripNs())
 };
 
 // Nearest-rank percentile of sorted values (p in (0, 1]).
@@ -202,11 +204,19 @@ bool runWorld(World& world, int frames, const QString& label, bool quiet, FrameT
     return true;
 }
 
+// "A..B" ns, the least and the most of the round trips measured, or "n/a" if none was.
+QString roundTripRange(std::vector<double> ns) {
+    if (ns.empty())
+        return QStringLiteral("n/a");
+    const auto [low, high] = std::minmax_element(ns.begin(), ns.end());
+    return QString("%1..%2").arg(*low, 0, 'f', 0).arg(*high, 0, 'f', 0);
+}
+
 // The same scene on one thread: the speedup of the threaded run, and whether both ended in the same state, bit for bit.
 QString threadsLine(const QString& label, int threads, const BenchResult& threaded, const BenchResult& one) {
     const auto ratio = [](double a, double b) { return b > 0.0 ? a / b : 0.0; };
     return QString("threads scene=%1 threads=%2 one_thread_median_ms=%3 speedup_median=%4 speedup_mean=%5 "
-                   "identical=%6 steps_alone=%7/%8 team_steps=%9/%8\n")
+                   "identical=%6 steps_alone=%7/%8 team_steps=%9/%8 core_round_trip_ns=%10\n")
         .arg(label)
         .arg(threads)
         .arg(one.medianMs, 0, 'f', 3)
@@ -215,7 +225,8 @@ QString threadsLine(const QString& label, int threads, const BenchResult& thread
         .arg(one.stateHash == threaded.stateHash ? "yes" : "no")
         .arg(threaded.stepsAlone)
         .arg(static_cast<qulonglong>(threaded.frames) * static_cast<qulonglong>(threaded.runs))
-        .arg(threaded.teamSteps);
+        .arg(threaded.teamSteps)
+        .arg(roundTripRange(threaded.roundTripNs));
 }
 
 // The fields both engines' lines share: bodies= frames= median_ms= p95_ms= mean_ms= awake= contacts=.
@@ -309,10 +320,14 @@ int runBench(const QStringList& arguments) {
         {"threads",
          "Threads for RigidLab's step (default 1). Above 1, each scene is then run again on one thread "
          "and a line threads scene=... one_thread_median_ms= speedup_median= speedup_mean= identical= "
-         "steps_alone= team_steps= compares them (identical: the same final state, bit for bit; steps_alone: "
+         "steps_alone= team_steps= core_round_trip_ns= compares them (identical: the same final state, bit for bit; "
+         "steps_alone: "
          "the steps of all runs that the threaded world took on one thread because its team did not "
          "pay, the machine's other cores being busy; team_steps: the steps in which the team shared "
-         "any work, none in a scene too small for it, such as stack20).",
+         "any work, none in a scene too small for it, such as stack20; core_round_trip_ns: the least and the "
+         "most time, over the runs, that two threads on the first two CPUs took to pass a counter there and back, "
+         "measured before each threaded run: on a shared virtual machine it moves with the host's placement of "
+         "the virtual CPUs, and the threaded step's cost with it).",
          "t"});
     parser.addOption({"runs",
                       QString("Runs of each engine on each scene (default %1), taking turns; each frame counts at its "
@@ -455,8 +470,12 @@ int runBench(const QStringList& arguments) {
             }
             return true;
         };
+        std::vector<double> roundTrips;
         for (int r = 0; r < repeats && ok; ++r) {
             const QString run = repeats > 1 ? QString(", run %1/%2").arg(r + 1).arg(repeats) : QString();
+            if (threads > 1)
+                if (const std::optional<double> ns = measureCoreRoundTripNs())
+                    roundTrips.push_back(*ns);
             ok = runOurs(options, label + run, r, ourTimes, result);
             if (ok && threads > 1)
                 ok = runOurs(single, label + " (1 thread" + run + ")", r, oneTimes, one);
@@ -481,6 +500,7 @@ int runBench(const QStringList& arguments) {
         }
         summarize(ourTimes, result);
         result.runs = repeats;
+        result.roundTripNs = roundTrips;
         printOut(resultLine(label, result));
         if (threads > 1) {
             summarize(oneTimes, one);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 namespace {
 
@@ -100,6 +101,16 @@ private slots:
         QCOMPARE(team[1], QStringLiteral("90"));
         QCOMPARE(team[0].toInt(&ok) + alone[0].toInt(), 90);
         QVERIFY(ok);
+        // The core round trip before each threaded run, least..most, in ns; none on a machine with one CPU.
+        if (std::thread::hardware_concurrency() < 2) {
+            QCOMPARE(f.value("core_round_trip_ns"), QStringLiteral("n/a"));
+            return;
+        }
+        const QStringList trip = f.value("core_round_trip_ns").split("..");
+        QCOMPARE(trip.size(), 2);
+        bool lowOk = false, highOk = false;
+        const double low = trip[0].toDouble(&lowOk), high = trip[1].toDouble(&highOk);
+        QVERIFY2(lowOk && highOk && low > 0.0 && low <= high, qPrintable(f.value("core_round_trip_ns")));
         qInfo("%s", qPrintable(lines[1]));
     }
 

@@ -3,18 +3,23 @@
 // the same work), then steps a scene on two threads and on one (one run each, the median of its frames). On a
 // shared virtual machine each virtual CPU's speed moves from one tenth of a second to the next; the arithmetic's
 // speedup shows how far that alone moves a two-thread figure, with no synchronisation and no shared data to blame.
+// The last column is the core round trip before the round (world/CoreRoundTrip.h): the step hands data from core to
+// core, the arithmetic does not, so when the host places the two virtual CPUs far apart only the step slows.
 //
 //   bench_machine_threads [--rounds N] [--frames N] [SCENE]     (SCENE: a library name or file; default ramps.obj)
 #include "BenchMedian.h"
 #include "io/SceneImport.h"
 #include "scene/SceneLibrary.h"
+#include "world/CoreRoundTrip.h"
 #include "world/World.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -101,10 +106,12 @@ int main(int argc, char** argv) {
         }
         scene = std::move(imported).value();
     }
-    std::printf("round arithmetic_1t_ms arithmetic_2t_ms arithmetic_speedup step_1t_ms step_2t_ms step_speedup\n");
+    std::printf("round arithmetic_1t_ms arithmetic_2t_ms arithmetic_speedup step_1t_ms step_2t_ms step_speedup "
+                "core_round_trip_ns\n");
     int arithmeticAbove = 0, stepAbove = 0;
     std::vector<double> arithmeticSpeedups, stepSpeedups;
     for (int r = 0; r < rounds; ++r) {
+        const std::optional<double> roundTrip = measureCoreRoundTripNs();
         const double one = arithmeticMs(1), two = arithmeticMs(2);
         uint64_t hash2 = 0, hash1 = 0;
         const double step2 = stepMs(*scene, 2, frames, hash2), step1 = stepMs(*scene, 1, frames, hash1);
@@ -117,7 +124,8 @@ int main(int argc, char** argv) {
         stepSpeedups.push_back(s);
         arithmeticAbove += a >= 1.7 ? 1 : 0;
         stepAbove += s >= 1.7 ? 1 : 0;
-        std::printf("%d %.1f %.1f %.2f %.3f %.3f %.2f\n", r + 1, one, two, a, step1, step2, s);
+        std::printf("%d %.1f %.1f %.2f %.3f %.3f %.2f %s\n", r + 1, one, two, a, step1, step2, s,
+                    roundTrip ? std::to_string(static_cast<int>(std::lround(*roundTrip))).c_str() : "n/a");
         std::fflush(stdout);
     }
     const auto [aLow, aHigh] = std::minmax_element(arithmeticSpeedups.begin(), arithmeticSpeedups.end());

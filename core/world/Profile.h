@@ -45,13 +45,14 @@ enum class Counter {
     CcdBodies,        // bodies swept by CCD
     CcdHits,          // sweeps that stopped a body
     Steps,
-    IslandsSharedOut, // solves whose islands a team of threads shared out (World::splitByIslands())
-    IslandsCut,       // islands cut in two parts for the solver, on any number of threads (World::cutIslands())
-    SolvedInParts,    // solves in which each of two threads swept one part (World::solveSubsteps())
-    PartImbalance,    // bodies by which the larger of the two parts outnumbers the other, summed over the solves of
-                      // a whole group with an island cut (World::planCuts())
-    StepsAlone,       // steps a world with a team took on one thread, the team not paying (TeamPacer)
-    TeamSteps,        // steps in which a world's team of threads ran at least one job together (ThreadTeam::run())
+    IslandsSharedOut,   // solves whose islands a team of threads shared out (World::splitByIslands())
+    IslandsCut,         // islands cut in two parts for the solver, on any number of threads (World::cutIslands())
+    SolvedInParts,      // solves in which each of two threads swept one part (World::solveSubsteps())
+    PartImbalance,      // bodies by which the larger of the two parts outnumbers the other, summed over the solves of
+                        // a whole group with an island cut (World::planCuts())
+    StepsAlone,         // steps a world with a team took on one thread, the team not paying (TeamPacer)
+    TeamSteps,          // steps in which a world's team of threads ran at least one job together (ThreadTeam::run())
+    IslandsInBodyOrder, // of IslandsSharedOut, the solves whose islands went to the members in runs of body order
     Count
 };
 inline constexpr int kCounterCount = static_cast<int>(Counter::Count);

@@ -11,6 +11,7 @@
 #include "dynamics/Integrator.h"
 #include "scene/Scene.h"
 #include "world/Effects.h"
+#include "world/IslandShare.h"
 #include "world/Profile.h"
 #include "world/TeamPacer.h"
 #include "world/ThreadTeam.h"
@@ -297,6 +298,11 @@ private:
     void solveInRuns(const SolveScratch& from, SolveScratch& work, int substeps, bool timed);
     // Shares m_scratch's islands out among the team's members (m_memberScratch) if that is worth it.
     bool splitByIslands();
+    // m_memberScratch from m_scratch, each island to its member in m_islandMember (splitByIslands()).
+    void fillMemberScratch();
+    // splitByIslands() keeps the islands in runs of body order when no member gets more than this many hundredths of
+    // the work times the team's size (102: 51 % of it on one of two members; shareIslandsOut()).
+    static constexpr uint64_t kInOrderShare = 102;
     // Plans, for the whole group (m_scratch.bodies), how many bodies of each island to cut go to part 0
     // (m_cutShare): the other islands go whole to the part with fewer bodies, largest first, and each island to cut
     // is then split where the two parts come out even. Planned before islands are shared out among threads, so a
@@ -447,7 +453,8 @@ private:
     static constexpr uint32_t kNoMember = 0xffffffffu;
     std::vector<uint32_t> m_islandMember; // per island root: the member that solves it (splitByIslands())
     std::vector<std::pair<uint32_t, uint32_t>> m_islandLoad;
-    std::vector<uint64_t> m_memberLoad;
+    std::vector<uint32_t> m_islandWork; // per entry of m_islandLoad, its work (splitByIslands())
+    IslandShare m_islandShare;
     std::vector<uint32_t> m_cutShare;                          // per root of an island to cut: its bodies in part 0
     std::vector<std::pair<uint32_t, uint32_t>> m_wholeIslands; // planCuts(): (bodies, root) of the islands not cut
     std::vector<uint32_t> m_islandsToCut;                      // planCuts(): their roots

@@ -205,7 +205,7 @@ bool runWorld(World& world, int frames, const QString& label, bool quiet, FrameT
 }
 
 // "A..B" ns, the least and the most of the round trips measured, or "n/a" if none was.
-QString roundTripRange(std::vector<double> ns) {
+QString roundTripRange(const std::vector<double>& ns) {
     if (ns.empty())
         return QStringLiteral("n/a");
     const auto [low, high] = std::minmax_element(ns.begin(), ns.end());

@@ -5,18 +5,6 @@
 
 namespace rl {
 
-namespace {
-
-uint64_t mostOnOne(const std::vector<uint32_t>& member, std::span<const uint32_t> work, size_t members) {
-    thread_local std::vector<uint64_t> total;
-    total.assign(members, 0);
-    for (size_t k = 0; k < work.size(); ++k)
-        total[member[k]] += work[k];
-    return *std::max_element(total.begin(), total.end());
-}
-
-} // namespace
-
 void shareIslandsOut(std::span<const uint32_t> work, size_t members, uint64_t inOrderPercent, IslandShare& out) {
     members = std::max<size_t>(members, 1);
     out.member.assign(work.size(), 0);
@@ -32,13 +20,16 @@ void shareIslandsOut(std::span<const uint32_t> work, size_t members, uint64_t in
         out.member[k] = static_cast<uint32_t>(std::min<uint64_t>(members - 1, middle * members / (2 * out.all)));
         before += work[k];
     }
-    out.largest = mostOnOne(out.member, work, members);
+    thread_local std::vector<uint64_t> total;
+    total.assign(members, 0);
+    for (size_t k = 0; k < work.size(); ++k)
+        total[out.member[k]] += work[k];
+    out.largest = *std::max_element(total.begin(), total.end());
     if (100 * out.largest * members <= inOrderPercent * out.all)
         return;
 
     out.inBodyOrder = false;
     thread_local std::vector<uint32_t> order;
-    thread_local std::vector<uint64_t> total;
     order.resize(work.size());
     std::iota(order.begin(), order.end(), 0u);
     std::sort(order.begin(), order.end(),

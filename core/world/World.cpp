@@ -1033,9 +1033,9 @@ bool World::splitByIslands() {
     // Islands share no moving body, so a team can solve whole islands apart, with no synchronisation at all: each
     // member takes its islands through every substep with a solver of its own. Each body still sees the operations
     // of one thread in the same order (the constraints of its island, in manifold order), so the results are the
-    // same numbers. Islands go to members largest first, each to the least loaded (by bodies plus contacts); a
-    // group whose islands cannot be shared out fairly (one island of most of the work: a pile, a pyramid) is left to
-    // the level-by-level team of solveSubsteps().
+    // same numbers. Islands go to members in runs of body order when that is fair, else largest first, each to the
+    // least loaded (by bodies plus contacts; shareIslandsOut()); a group whose islands cannot be shared out fairly
+    // (one island of most of the work: a pile, a pyramid) is left to the level-by-level team of solveSubsteps().
     const SolveScratch& scratch = m_scratch;
     if (!m_team || scratch.bodies.size() < kMinBodiesForTeam)
         return false;
@@ -1046,18 +1046,19 @@ bool World::splitByIslands() {
     if (std::all_of(scratch.bodies.begin(), scratch.bodies.end(),
                     [&](uint32_t i) { return m_island[i] == firstIsland; }))
         return false;
-    // m_islandMember first holds each island's entry in load, then (below) its member.
+    // m_islandMember first holds each island's entry in m_islandRoots and m_islandWork, then (below) its member.
     m_islandMember.resize(m_state.size());
-    std::vector<std::pair<uint32_t, uint32_t>>& load = m_islandLoad; // (work, island root), one per island
-    load.clear();
+    m_islandRoots.clear();
+    m_islandWork.clear();
     for (uint32_t i : scratch.bodies)
         m_islandMember[m_island[i]] = kNoMember;
     const auto add = [&](uint32_t root) {
         if (m_islandMember[root] == kNoMember) {
-            m_islandMember[root] = static_cast<uint32_t>(load.size());
-            load.emplace_back(0, root);
+            m_islandMember[root] = static_cast<uint32_t>(m_islandRoots.size());
+            m_islandRoots.push_back(root);
+            m_islandWork.push_back(0);
         }
-        ++load[m_islandMember[root]].first;
+        ++m_islandWork[m_islandMember[root]];
     };
     for (uint32_t i : scratch.bodies)
         add(m_island[i]);
@@ -1069,24 +1070,15 @@ bool World::splitByIslands() {
     // written. Over ramps.obj's first 120 frames on two threads, medians of five interleaved runs, 2026-12-05: with
     // the cores 50-65 ns apart (CoreRoundTrip.h), 1.057 and 1.062 ms a step before, 1.040 and 1.045 in runs; with
     // them 340-350 ns apart, 1.376, 1.383 and 1.561 ms before, 1.353, 1.343 and 1.370 in runs (three pairs).
-    m_islandWork.clear();
-    for (const auto& entry : load)
-        m_islandWork.push_back(entry.first);
     shareIslandsOut(m_islandWork, members, kInOrderShare, m_islandShare);
     // The slowest member's share against a perfect one: at most 60 % of the work on one of two members.
     if (10 * m_islandShare.largest * members > 12 * m_islandShare.all)
         return false;
-    for (size_t k = 0; k < load.size(); ++k)
-        m_islandMember[load[k].second] = m_islandShare.member[k];
+    for (size_t k = 0; k < m_islandRoots.size(); ++k)
+        m_islandMember[m_islandRoots[k]] = m_islandShare.member[k];
     if (m_islandShare.inBodyOrder)
         m_profile.count(Counter::IslandsInBodyOrder, 1);
-    fillMemberScratch();
-    return true;
-}
-
-void World::fillMemberScratch() {
-    const SolveScratch& scratch = m_scratch;
-    m_memberScratch.resize(static_cast<size_t>(m_team->size()));
+    m_memberScratch.resize(members);
     for (SolveScratch& part : m_memberScratch) {
         part.bodies.clear();
         part.clearContacts();
@@ -1095,6 +1087,7 @@ void World::fillMemberScratch() {
         m_memberScratch[m_islandMember[m_island[i]]].bodies.push_back(i);
     for (size_t k = 0; k < scratch.activeContacts.size(); ++k)
         m_memberScratch[m_islandMember[m_activeIsland[k]]].activeContacts.push_back(scratch.activeContacts[k]);
+    return true;
 }
 
 void World::planCuts() {

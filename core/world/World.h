@@ -298,8 +298,6 @@ private:
     void solveInRuns(const SolveScratch& from, SolveScratch& work, int substeps, bool timed);
     // Shares m_scratch's islands out among the team's members (m_memberScratch) if that is worth it.
     bool splitByIslands();
-    // m_memberScratch from m_scratch, each island to its member in m_islandMember (splitByIslands()).
-    void fillMemberScratch();
     // splitByIslands() keeps the islands in runs of body order when no member gets more than this many hundredths of
     // the work times the team's size (102: 51 % of it on one of two members; shareIslandsOut()).
     static constexpr uint64_t kInOrderShare = 102;
@@ -452,8 +450,8 @@ private:
     size_t m_groupBodies = 0;                  // moving bodies of the group being solved (solveGroup())
     static constexpr uint32_t kNoMember = 0xffffffffu;
     std::vector<uint32_t> m_islandMember; // per island root: the member that solves it (splitByIslands())
-    std::vector<std::pair<uint32_t, uint32_t>> m_islandLoad;
-    std::vector<uint32_t> m_islandWork; // per entry of m_islandLoad, its work (splitByIslands())
+    // splitByIslands(): the group's islands by their first body, and each one's work (bodies plus contacts).
+    std::vector<uint32_t> m_islandRoots, m_islandWork;
     IslandShare m_islandShare;
     std::vector<uint32_t> m_cutShare;                          // per root of an island to cut: its bodies in part 0
     std::vector<std::pair<uint32_t, uint32_t>> m_wholeIslands; // planCuts(): (bodies, root) of the islands not cut

@@ -5,7 +5,6 @@
 #include <QTest>
 
 #include <cmath>
-#include <thread>
 
 #if defined(__linux__)
 #include <pthread.h>

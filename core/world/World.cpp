@@ -3,6 +3,7 @@
 #include "collision/Collide.h"
 #include "collision/ContactCache.h"
 #include "collision/Penetration.h"
+#include "common/CacheLines.h"
 #include "scene/BodyProperties.h"
 
 #include <algorithm>
@@ -334,6 +335,15 @@ void World::refreshTransforms() {
     m_reinsert.resize(n);
     m_fatBoxes.resize(n);
     const auto refresh = [&](size_t begin, size_t end) {
+        // On a team, the other members read many of these in the last narrowphase: take them back in one go
+        // (claimLines()). (Over ramps.obj's first 120 frames on two threads with the cores 320-370 ns apart
+        // (CoreRoundTrip.h), this pass took 11.2 ms before, medians of 13 runs, and 7.3 ms after, of 11; claimed 8
+        // or 16 bodies ahead in the loop, 9.9 ms, of 12 and 13; 2026-12-05.)
+        if (m_team) {
+            claimLines(m_transforms.data() + begin, (end - begin) * sizeof(Transform));
+            claimLines(m_bounds.data() + begin, (end - begin) * sizeof(Aabb));
+            claimLines(m_reach.data() + begin, (end - begin) * sizeof(Real));
+        }
         for (size_t k = begin; k < end; ++k) {
             const uint32_t i = static_cast<uint32_t>(k);
             // Each body's polyhedron sits in a heap block of its own: fetch a later body's while this one is taken.
@@ -418,10 +428,16 @@ void World::mergePairs(const BroadPhase::ParallelFor& parallelFor) {
     // 660 bytes each, made this stage 0.7 ms per step over ramps.obj's first 120 frames, ~6,000 pairs; moving slot
     // numbers, 0.4 ms.) The current lists and the contacts are only read: other members of the team may be
     // colliding the current pairs meanwhile (findAndCollidePairs()). New pairs get their slots in commitPairs().
+    // On a team, the next lists are the ones the other members' filter read a step ago: taken back in one go
+    // (claimLines()), this stage took 20.8 ms of ramps.obj's first 120 frames on two threads with the cores far
+    // apart, against 26.6 ms (medians of 14 runs each, 2026-12-05).
     std::vector<uint32_t>& next = m_nextPairContacts;
-    next.clear();
-    next.reserve(pairs.size());
+    next.resize(pairs.size());
     m_nextPairBodies.resize(pairs.size());
+    if (m_ownTeam) {
+        claimLines(next.data(), next.size() * sizeof(next[0]));
+        claimLines(m_nextPairBodies.data(), m_nextPairBodies.size() * sizeof(m_nextPairBodies[0]));
+    }
     size_t old = 0;
     for (size_t i = 0; i < pairs.size(); ++i) {
         const BroadPhasePair& p = pairs[i];
@@ -429,12 +445,12 @@ void World::mergePairs(const BroadPhase::ParallelFor& parallelFor) {
         while (old < m_pairContacts.size() && m_pairBodies[old] < std::make_pair(p.idA, p.idB))
             m_endedContacts.push_back(m_pairContacts[old++]);
         if (old < m_pairContacts.size() && sameBodies(p, m_pairBodies[old])) {
-            next.push_back(m_pairContacts[old++]);
+            next[i] = m_pairContacts[old++];
             continue;
         }
         m_newPairs.push_back(i);
         m_newPairEnded.push_back(m_endedContacts.size());
-        next.push_back(kNoSlot);
+        next[i] = kNoSlot;
     }
     while (old < m_pairContacts.size())
         m_endedContacts.push_back(m_pairContacts[old++]);
@@ -606,6 +622,12 @@ void World::findAndCollidePairs() {
         // ramps.obj): a few pairs ahead, every line of the next contact is fetched while this one is computed.
         // (Over ramps.obj's first 240 frames the stage went from 389-429 ms to 335-410 ms, in seven interleaved
         // pairs.)
+        // On a team, the contacts to be written are taken for this core first, all of them (claimLines()): the
+        // other member's core may hold them from the solve. (With the cores far apart, the two members' collisions
+        // took 77.5 ms of the first 120 frames against 80.3, medians of 14 runs, 2026-12-05.)
+        if (m_team)
+            for (const NarrowTest& test : tests)
+                claimLines(&m_contactPool[test.slot], sizeof(Contact));
         constexpr size_t kAhead = 4;
         for (size_t k = 0; k < tests.size(); ++k) {
             if (k + kAhead < tests.size()) {

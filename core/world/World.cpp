@@ -952,7 +952,6 @@ void World::solve() {
     // 0.01 ms, 2026-12-01.)
     m_uniformRefinement = !(mostInverseMass > (1.0 - 1e-9) * m_tuning.refineMassRatio * leastInverseMass);
     m_solverCounters = {};
-    m_solverIndex.assign(n, 0);
     if (m_uniformRefinement) {
         m_anyHeight = false;
         if (!moving.empty())
@@ -1303,7 +1302,7 @@ void World::numberByParts(SolveScratch& scratch) {
         reordered[renumber[k + 1] - 1] = group[k];
     std::swap(group, reordered);
     for (size_t k = 0; k < n; ++k)
-        m_solverIndex[group[k]] = static_cast<uint32_t>(k + 1);
+        scratch.solverIndex[group[k]] = static_cast<uint32_t>(k + 1);
     for (uint32_t& index : scratch.indexA)
         index = renumber[index];
     for (uint32_t& index : scratch.indexB)
@@ -1406,8 +1405,13 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
         parallelFor = teamParallelFor();
 
     // Solver indices: entry 0 stands for every immovable body (anchors and sleepers); the group's bodies follow.
+    // Each scratch holds its own, all 0 between solves, so that members solving islands apart do not write the
+    // same lines.
+    std::vector<uint32_t>& solverIndex = scratch.solverIndex;
+    if (solverIndex.size() != m_state.size())
+        solverIndex.assign(m_state.size(), 0);
     for (size_t k = 0; k < group.size(); ++k)
-        m_solverIndex[group[k]] = static_cast<uint32_t>(k + 1);
+        solverIndex[group[k]] = static_cast<uint32_t>(k + 1);
     const size_t contactCount = scratch.activeContacts.size();
     scratch.manifolds.resize(contactCount);
     scratch.indexA.resize(contactCount);
@@ -1421,8 +1425,8 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
             const ContactPair& contact = m_contactPairs[slot];
             scratch.manifolds[k] = &m_contactPool[slot].manifold; // its address only: the solver reads it
             // Sleepers and anchors have solver index 0; so does a moving body of another group, which cannot touch.
-            scratch.indexA[k] = m_solverIndex[contact.bodyA];
-            scratch.indexB[k] = m_solverIndex[contact.bodyB];
+            scratch.indexA[k] = solverIndex[contact.bodyA];
+            scratch.indexB[k] = solverIndex[contact.bodyB];
             scratch.friction[k] = contact.friction;
             scratch.restitution[k] = contact.restitution;
             scratch.held[k] = m_anyHeight ? contactHold(slot) : ContactSolver::Hold{};
@@ -1705,7 +1709,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
              [&](size_t first, size_t last) { local.scatterMotionRange(m_state, group, first, last); });
     solver.storeImpulses(scratch.manifolds, parallelFor);
     for (uint32_t i : group)
-        m_solverIndex[i] = 0;
+        solverIndex[i] = 0;
     scratch.rows += solver.counters();
     scratch.islandsCutTotal += scratch.islandsCut;
     scratch.partImbalanceTotal += scratch.partImbalance;

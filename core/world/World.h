@@ -244,6 +244,7 @@ private:
     // The solver and scratch of the group being solved.
     struct SolveScratch {
         std::vector<uint32_t> bodies;
+        std::vector<uint32_t> solverIndex; // per body of the world: its solver index in this scratch's solve, else 0
         ContactSolver solver;
         std::vector<SolverBody> solverBodies;
         std::vector<Vec3> centers;
@@ -314,7 +315,7 @@ private:
     void cutIslands(SolveScratch& scratch, const ContactSolver::ParallelFor& parallelFor = {}) const;
     // Whether an island of `bodies` moving bodies, in a group of m_groupBodies, is cut (cutIslands()).
     bool cutsIsland(size_t bodies) const;
-    // After cutIslands(): numbers the group's bodies part by part (scratch.bodies, m_solverIndex, the contacts'
+    // After cutIslands(): numbers the group's bodies part by part (scratch.bodies, scratch.solverIndex, the contacts'
     // solver indices and scratch.part follow).
     void numberByParts(SolveScratch& scratch);
     // A group is solved by the whole team only from this many bodies on, and with at least this many constraints
@@ -419,7 +420,7 @@ private:
     // This step: no two moving bodies far enough apart in mass for any island to take finer substeps (solve()); then
     // m_refinement is not filled and every moving body is in the one group.
     bool m_uniformRefinement = true;
-    std::vector<uint32_t> m_solverIndex, m_moving;
+    std::vector<uint32_t> m_moving;
     std::vector<uint32_t> m_activeIsland; // per contact of m_scratch.activeContacts: its island (solveGroup())
     // Per member of the team in findAndCollidePairs(): its touching contacts, the pairs whose contact may wake a
     // sleeper (their index in the pair list), and its counts.

@@ -334,6 +334,16 @@ void World::refreshTransforms() {
     m_transforms.resize(n);
     m_reinsert.resize(n);
     m_fatBoxes.resize(n);
+    // CCD's record of where each body began the step, taken here: nothing moves a body before the solve. (Taken in
+    // the solver's set-up until 2026-12-05, where two members solving islands apart wrote the same lines whenever
+    // their islands' bodies sat side by side in body order. Over ramps.obj's first 120 frames on two threads with
+    // the cores 320-380 ns apart, each member's set-up took 2.0-2.1 ms against 5.0-5.4, the refresh 7.7 against 6.8
+    // ms, the whole step 134 against 140 ms; medians of six runs taken in turns.)
+    const bool ccd = m_effects.effects.has(Effect::Ccd);
+    if (ccd) {
+        m_stepStartPosition.resize(n);
+        m_stepStartOrientation.resize(n);
+    }
     const auto refresh = [&](size_t begin, size_t end) {
         // On a team, the other members read many of these in the last narrowphase: take them back in one go
         // (claimLines()). (Over ramps.obj's first 120 frames on two threads with the cores 320-370 ns apart
@@ -343,6 +353,10 @@ void World::refreshTransforms() {
             claimLines(m_transforms.data() + begin, (end - begin) * sizeof(Transform));
             claimLines(m_bounds.data() + begin, (end - begin) * sizeof(Aabb));
             claimLines(m_reach.data() + begin, (end - begin) * sizeof(Real));
+            if (ccd) {
+                claimLines(m_stepStartPosition.data() + begin, (end - begin) * sizeof(Vec3));
+                claimLines(m_stepStartOrientation.data() + begin, (end - begin) * sizeof(Quat));
+            }
         }
         for (size_t k = begin; k < end; ++k) {
             const uint32_t i = static_cast<uint32_t>(k);
@@ -353,6 +367,10 @@ void World::refreshTransforms() {
             m_reinsert[i] = 0;
             if (m_state.isStatic(i))
                 continue;
+            if (ccd) {
+                m_stepStartPosition[i] = m_state.position[i];
+                m_stepStartOrientation[i] = m_state.orientation[i];
+            }
             const Aabb& tight = m_bounds[i] = m_shapes[i].worldBounds(m_transforms[i]);
             m_reach[i] = glm::length(m_state.linearVelocity[i]) + glm::length(m_state.angularVelocity[i]) * m_radius[i];
             if (!m_state.isMoving(i))
@@ -938,9 +956,6 @@ void World::solve() {
             mostInverseMass = std::max(mostInverseMass, m_state.invMass[i]);
         }
     m_profile.count(Counter::AwakeBodies, moving.size());
-    // Written with the solver's copies of the bodies (solveSubsteps()), where each body is copied alone.
-    m_stepStartPosition.resize(n);
-    m_stepStartOrientation.resize(n);
 
     // Each island's mass ratio decides its substep count (substepRefinement()); islands are independent, so an
     // island with a light body under a heavy one can take finer substeps without making the rest of the world pay.
@@ -1469,8 +1484,6 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
             scratch.centers[k + 1] = m_state.position[i];
             scratch.startPosition[k] = local.position[k];
             scratch.startOrientation[k] = local.orientation[k];
-            m_stepStartPosition[i] = local.position[k];
-            m_stepStartOrientation[i] = local.orientation[k];
         }
     });
     // Velocities between the local bodies and the solver's copy, for the given local bodies.

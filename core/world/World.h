@@ -459,6 +459,7 @@ private:
     std::vector<uint32_t> m_islandsToCut;                      // planCuts(): their roots
     std::vector<std::pair<uint32_t, Real>> m_ccdMoves;         // continuousCollision(): (body, time of impact)
     ContactSolverCounters m_solverCounters;
+    // With CCD on: each dynamic body's centre and orientation at the start of the step (refreshTransforms()).
     std::vector<Vec3> m_stepStartPosition;
     std::vector<Quat> m_stepStartOrientation;
 

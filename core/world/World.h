@@ -398,6 +398,9 @@ private:
     // Per pool slot: the contact's manifold's point count (not 0 while it touches). Kept beside the pool so that the
     // narrowphase can tell without reading the contact, which is some 610 bytes in no useful order.
     std::vector<uint8_t> m_contactTouching;
+    // Per slot: 1 while the contact is in a member's list of solved contacts (NarrowList::solved), which the chunks
+    // of the narrowphase then pass over.
+    std::vector<uint8_t> m_contactListed;
     std::vector<std::pair<uint32_t, uint32_t>> m_pairBodies; // the bodies of m_pairContacts[i]
     std::vector<uint32_t> m_touchingContacts; // slots of the touching contacts, in pair order, after narrowphase
     // Their bodies, so that islands and groups are found without reading the contacts.
@@ -439,10 +442,14 @@ private:
         std::vector<uint32_t> touching;
         std::vector<std::pair<uint32_t, uint32_t>> touchingBodies;
         std::vector<size_t> mayWake;
+        // The contacts of the islands this member solved in the last step (splitByIslands()), which it collides
+        // first in this step's narrowphase, before it takes chunks of the rest.
+        std::vector<uint32_t> solved;
         uint64_t tested = 0, points = 0;
     };
     std::vector<NarrowList> m_narrowLists;
     static constexpr size_t kNarrowChunk = 128; // pairs per claim of the narrowphase's team
+    static constexpr size_t kSolvedChunk = 32;  // contacts per claim of member 0's solved contacts (NarrowList::solved)
     // Pairs the last step's narrowphase tested (findAndCollidePairs()); the first step counts as busy.
     uint64_t m_lastPairsTested = std::numeric_limits<uint64_t>::max();
     SolveScratch m_scratch;

@@ -39,6 +39,15 @@ public:
                 begin + n * static_cast<size_t>(member + 1) / static_cast<size_t>(members)};
     }
 
+    // The chunk a member takes with one claim, when the members claim chunks of a list with one shared counter:
+    // `claim` is the counter's value before this claim (the claim stands if it is below `chunks`) and `k` counts the
+    // member's own claims before it. A team of two takes the list from its two ends, member 0 chunk k and member 1
+    // chunk chunks - 1 - k, so that each keeps to one end of the list; as every claim that stands counts once, the two
+    // never take the same chunk, and between them they take all. Any other team takes chunk `claim`.
+    static size_t chunkOfClaim(size_t claim, size_t k, int member, int members, size_t chunks) {
+        return members != 2 ? claim : member == 0 ? k : chunks - 1 - k;
+    }
+
 private:
     void work(int member);
     // Spins briefly on a changing counter, then sleeps on it (a futex) until it differs from `seen`.

@@ -709,7 +709,6 @@ void World::findAndCollidePairs() {
         const size_t chunk = members == 1 ? std::max<size_t>(pairCount, 1) : kNarrowChunk;
         const size_t chunks = (pairCount + chunk - 1) / chunk;
         std::atomic<size_t> claimed{0};
-        const bool fromBothEnds = members == 2;
         // Member 0's solved contacts in chunks: in a team of two, member 1 takes them from the back once it has
         // nothing else left (member 0 reinserts and merges first), claimed from both ends like the pairs' chunks.
         const std::vector<uint32_t>& firstSolved = m_narrowLists[0].solved;
@@ -748,19 +747,25 @@ void World::findAndCollidePairs() {
                 const size_t begin = at * kSolvedChunk, end = std::min(firstSolved.size(), begin + kSolvedChunk);
                 collideSolved(std::span<const uint32_t>(firstSolved).subspan(begin, end - begin));
             };
-            if (members > 1 && member == 0) {
-                for (size_t k = 0; solvedClaimed.fetch_add(1, std::memory_order_relaxed) < solvedChunks; ++k)
-                    collideFirstSolved(k);
-            } else if (members > 1) {
+            // Member 0's list, claimed by member 0 now and by member 1 at the end (a team of two).
+            const auto claimFirstSolved = [&] {
+                for (size_t k = 0;; ++k) {
+                    const size_t claim = solvedClaimed.fetch_add(1, std::memory_order_relaxed);
+                    if (claim >= solvedChunks)
+                        break;
+                    collideFirstSolved(ThreadTeam::chunkOfClaim(claim, k, member, members, solvedChunks));
+                }
+            };
+            if (members > 1 && member == 0)
+                claimFirstSolved();
+            else if (members > 1)
                 collideSolved(mine.solved);
-            }
-            // Every claim is one chunk. In a team of two, member 0's k-th claim is chunk k and member 1's is chunk
-            // chunks - 1 - k: with fewer claims than chunks in all, the two never take the same one.
+            // Every claim is one chunk; a team of two takes them from the two ends (ThreadTeam::chunkOfClaim()).
             for (size_t k = 0;; ++k) {
                 const size_t claim = members == 1 ? k : claimed.fetch_add(1, std::memory_order_relaxed);
                 if (claim >= chunks)
                     break;
-                const size_t at = !fromBothEnds ? claim : member == 0 ? k : chunks - 1 - k;
+                const size_t at = ThreadTeam::chunkOfClaim(claim, k, member, members, chunks);
                 mine.tests.clear();
                 for (size_t i = at * chunk, end = std::min(pairCount, (at + 1) * chunk); i < end; ++i) {
                     const uint32_t slot = m_pairContacts[i];
@@ -769,9 +774,8 @@ void World::findAndCollidePairs() {
                 }
                 mine.tested += collideTests(mine.tests);
             }
-            if (fromBothEnds && member == 1)
-                for (size_t k = 0; solvedClaimed.fetch_add(1, std::memory_order_relaxed) < solvedChunks; ++k)
-                    collideFirstSolved(solvedChunks - 1 - k);
+            if (members == 2 && member == 1)
+                claimFirstSolved();
         };
         if (members > 1)
             m_team->run(job);
@@ -1923,7 +1927,7 @@ void World::continuousCollision() {
             const size_t claim = claimed.fetch_add(1, std::memory_order_relaxed);
             if (claim >= chunks)
                 break;
-            const size_t at = members != 2 ? claim : member == 0 ? k : chunks - 1 - k;
+            const size_t at = ThreadTeam::chunkOfClaim(claim, k, member, members, chunks);
             for (size_t i = at * kChunk; i < std::min(n, (at + 1) * kChunk); ++i)
                 if (m_state.isMoving(static_cast<uint32_t>(i)))
                     sweepBody(static_cast<uint32_t>(i), work[static_cast<size_t>(member)]);

@@ -4,6 +4,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -104,6 +105,51 @@ private slots:
                 }
                 QCOMPARE(next, 10 + n);
             }
+    }
+
+    // Chunks claimed from one counter in any interleaving of the members' claims: every chunk is taken exactly once,
+    // and in a team of two each member keeps to its end of the list.
+    void claimsTakeEveryChunkOnce_data() {
+        QTest::addColumn<int>("members");
+        QTest::addColumn<int>("chunks");
+        QTest::newRow("one member") << 1 << 7;
+        QTest::newRow("two members, even") << 2 << 8;
+        QTest::newRow("two members, odd") << 2 << 9;
+        QTest::newRow("two members, one chunk") << 2 << 1;
+        QTest::newRow("two members, none") << 2 << 0;
+        QTest::newRow("three members") << 3 << 10;
+    }
+    void claimsTakeEveryChunkOnce() {
+        QFETCH(int, members);
+        QFETCH(int, chunks);
+        const size_t n = static_cast<size_t>(chunks);
+        uint32_t seed = 7;
+        for (int trial = 0; trial < 200; ++trial) {
+            std::vector<int> taken(n, 0);
+            std::vector<size_t> claims(static_cast<size_t>(members), 0); // each member's claims so far
+            std::vector<bool> done(static_cast<size_t>(members), false);
+            size_t counter = 0;
+            // The members claim in a random order until each has had a claim refused.
+            while (std::find(done.begin(), done.end(), false) != done.end()) {
+                seed = seed * 1664525u + 1013904223u;
+                const int m = static_cast<int>((seed >> 8) % static_cast<uint32_t>(members));
+                if (done[static_cast<size_t>(m)])
+                    continue;
+                const size_t claim = counter++;
+                if (claim >= n) {
+                    done[static_cast<size_t>(m)] = true;
+                    continue;
+                }
+                const size_t k = claims[static_cast<size_t>(m)]++;
+                const size_t at = ThreadTeam::chunkOfClaim(claim, k, m, members, n);
+                QVERIFY(at < n);
+                ++taken[at];
+                if (members == 2)
+                    QCOMPARE(at, m == 0 ? k : n - 1 - k);
+            }
+            for (size_t c = 0; c < n; ++c)
+                QCOMPARE(taken[c], 1);
+        }
     }
 };
 

@@ -1085,8 +1085,26 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
         m_profile.count(Counter::IslandsSharedOut, 1);
         StageTimer timer(m_profile, Stage::Solve);
         m_team->run([&](int member) {
+            // Each member gathers the bodies and contacts of its own islands, in the group's order. (Gathered by
+            // member 0 for both before the job, this took 1.0 ms of ramps.obj's first 120 frames on two threads with
+            // the cores near, 1.8 far; the split now takes 0.6 and 0.8, and the solve job the same within 0.5 ms:
+            // medians of 11-12 runs near, 2 far, 2026-12-05.)
             const size_t m = static_cast<size_t>(member);
-            solveInRuns(m_memberScratch[m], m_runScratch[m], substeps, false);
+            SolveScratch& part = m_memberScratch[m];
+            part.bodies.clear();
+            part.clearContacts();
+            for (uint32_t i : scratch.bodies)
+                if (m_islandMember[m_island[i]] == m)
+                    part.bodies.push_back(i);
+            std::vector<uint32_t>& solved = m_narrowLists[m].solved;
+            for (size_t k = 0; k < scratch.activeContacts.size(); ++k)
+                if (m_islandMember[m_activeIsland[k]] == m) {
+                    const uint32_t slot = scratch.activeContacts[k];
+                    part.activeContacts.push_back(slot);
+                    solved.push_back(slot);
+                    m_contactListed[slot] = 1;
+                }
+            solveInRuns(part, m_runScratch[m], substeps, false);
         });
         solved = m_runScratch;
     } else if (!m_team || group.size() < kMinBodiesForTeam) {
@@ -1161,19 +1179,6 @@ bool World::splitByIslands() {
     if (m_islandShare.inBodyOrder)
         m_profile.count(Counter::IslandsInBodyOrder, 1);
     m_memberScratch.resize(members);
-    for (SolveScratch& part : m_memberScratch) {
-        part.bodies.clear();
-        part.clearContacts();
-    }
-    for (uint32_t i : scratch.bodies)
-        m_memberScratch[m_islandMember[m_island[i]]].bodies.push_back(i);
-    for (size_t k = 0; k < scratch.activeContacts.size(); ++k) {
-        const uint32_t slot = scratch.activeContacts[k];
-        const uint32_t member = m_islandMember[m_activeIsland[k]];
-        m_memberScratch[member].activeContacts.push_back(slot);
-        m_narrowLists[member].solved.push_back(slot);
-        m_contactListed[slot] = 1;
-    }
     return true;
 }
 

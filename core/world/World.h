@@ -297,7 +297,8 @@ private:
     // whole islands of about kRunBodies bodies, one run after the other, in `work` (whose rows, islands cut and
     // clamps add up over the runs). Islands are independent, so the results are those of one solve of them all.
     void solveInRuns(const SolveScratch& from, SolveScratch& work, int substeps, bool timed);
-    // Shares m_scratch's islands out among the team's members (m_memberScratch) if that is worth it.
+    // Shares m_scratch's islands out among the team's members (m_islandMember) if that is worth it; each member then
+    // gathers its part (m_memberScratch) in the solve's job.
     bool splitByIslands();
     // splitByIslands() keeps the islands in runs of body order when no member gets more than this many hundredths of
     // the work times the team's size (102: 51 % of it on one of two members; shareIslandsOut()).

@@ -1096,12 +1096,12 @@ void World::solveGroup(std::span<const uint32_t> group, int refinement) {
             for (uint32_t i : scratch.bodies)
                 if (m_islandMember[m_island[i]] == m)
                     part.bodies.push_back(i);
-            std::vector<uint32_t>& solved = m_narrowLists[m].solved;
+            std::vector<uint32_t>& solvedList = m_narrowLists[m].solved;
             for (size_t k = 0; k < scratch.activeContacts.size(); ++k)
                 if (m_islandMember[m_activeIsland[k]] == m) {
                     const uint32_t slot = scratch.activeContacts[k];
                     part.activeContacts.push_back(slot);
-                    solved.push_back(slot);
+                    solvedList.push_back(slot);
                     m_contactListed[slot] = 1;
                 }
             solveInRuns(part, m_runScratch[m], substeps, false);

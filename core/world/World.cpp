@@ -728,8 +728,8 @@ void World::findAndCollidePairs() {
                 timer.emplace(m_profile, Stage::Narrowphase);
             }
             // On a team, each member first collides the contacts of the islands it solved in the last step
-            // (splitByIslands() lists them): their manifolds are in its core's cache from that solve, and the
-            // islands mostly stay with it, so this step's solve reads them there again. Taken only by chunks of the
+            // (the solve job of solveGroup() lists them): their manifolds are in its core's cache from that solve, and
+            // the islands mostly stay with it, so this step's solve reads them there again. Taken only by chunks of the
             // pair list, 47 % of the touching contacts that ramps.obj's first 120 frames solved on two threads had
             // been collided by the other member (the contacts with a ramp come first in the pair list, by the
             // ramp's number), and 17 % with the lists. (With the cores 340-370 ns apart, `bench ramps --frames 120

@@ -443,7 +443,7 @@ private:
         std::vector<uint32_t> touching;
         std::vector<std::pair<uint32_t, uint32_t>> touchingBodies;
         std::vector<size_t> mayWake;
-        // The contacts of the islands this member solved in the last step (splitByIslands()), which it collides
+        // The contacts of the islands this member solved in the last step (listed in solveGroup()), which it collides
         // first in this step's narrowphase, before it takes chunks of the rest.
         std::vector<uint32_t> solved;
         uint64_t tested = 0, points = 0;

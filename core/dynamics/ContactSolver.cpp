@@ -1011,16 +1011,39 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
         // its four corners left at 15 rad/s). So the manifold's bouncing points are iterated together until the
         // impulses settle, which for a symmetric landing gives the symmetric answer.
         bool bouncing[4] = {false, false, false, false};
-        Real target[4] = {0.0, 0.0, 0.0, 0.0};
+        Real target[4] = {0.0, 0.0, 0.0, 0.0}, apart[4] = {0.0, 0.0, 0.0, 0.0};
         int count = 0;
+        bool touched = false; // a point that pushed is touching at the step end
         for (int k = 0; k < c.pointCount; ++k) {
             const ContactConstraint::Point& p = c.points[k];
+            const Vec3 d = (b.dp - a.dp) + (b.dR * p.rB - a.dR * p.rA);
+            apart[k] = glm::dot(c.normal, d) + p.baseSeparation;
+            touched = touched || (p.maxNormalImpulse != 0.0 && !(apart[k] > 0.0));
             // Only points that approached fast and actually pushed back bounce.
             if (p.relativeVelocity > -m_settings.restitutionThreshold || p.maxNormalImpulse == 0.0)
                 continue;
             bouncing[k] = true;
             target[k] = -c.restitution * p.relativeVelocity - m_settings.flightOffset * c.approachAcceleration * h;
             ++count;
+        }
+        // A manifold can push back with none of its points touching at the step end: the relax sweep's speculative
+        // rows slow what would close the gap in the next substep. Its bounce is launched from where it is, each point
+        // with the speed that a bounce off the surface has on its way back up to that separation (energy again, as
+        // for the impact in prepare()). Launched at the surface's speed from a few millimetres up, a ball dropped
+        // from 1 m reached a second apex 6.6 % above e^4 h0, and one from 1.25 m a third 15 % above e^6 h0
+        // (2026-12-05). A point is never launched slower than the sweeps left it: a corner far from the surface then
+        // gave back the impulse that kept it off, and ramps.obj's deepest contact in its first 2 s went from 49.6 to
+        // 60.1 mm (36.5 mm now). Where a point that pushed touches, the manifold landed within the step and bounces
+        // as before.
+        for (int k = 0; k < c.pointCount && !touched; ++k) {
+            if (!bouncing[k])
+                continue;
+            const ContactConstraint::Point& p = c.points[k];
+            const Real atSurface = -c.restitution * p.relativeVelocity;
+            const Real speed =
+                std::sqrt(std::max(atSurface * atSurface + 2.0 * c.approachAcceleration * apart[k], 0.0));
+            target[k] =
+                std::max(speed - m_settings.flightOffset * c.approachAcceleration * h, rowVelocity(a, b, p, c.normal));
         }
         const int passes = count == 1 ? 1 : kRestitutionPasses;
         for (int pass = 0; count > 0 && pass < passes; ++pass) {

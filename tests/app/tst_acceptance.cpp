@@ -191,16 +191,21 @@ private slots:
     }
 
     // Drop with e = 0.5 from h0 = 5 m: the first three apex heights (frame maxima of the centre, minus the half
-    // height) within 3 % of e^(2n) h0. A Blender UV sphere (r 0.1) and a Blender 0.2 m cube falling face down.
+    // height) within 3 % of e^(2n) h0. A Blender UV sphere (r 0.1) and a Blender 0.2 m cube falling face down; and in
+    // plain JSON a sphere from 1 m and 1.25 m and a cube from 2 m, whose second or third apexes were 6-15 % high
+    // until 2026-12-05 (ContactSolver::applyRestitution()).
     void drop_data() {
         QTest::addColumn<QString>("scene");
         QTest::addColumn<double>("half");
         // Dropped straight, neither should pick up spin: a one-pass restitution left the cube at 15 rad/s and the
-        // sphere (landing on its pole, with a ring of vertices 1.9 mm above it) at 28 rad/s. Measured now: 0.09 and
-        // 1.2 rad/s.
+        // sphere (landing on its pole, with a ring of vertices 1.9 mm above it) at 28 rad/s. Measured now (2026-12-05):
+        // 0.008 and 1.9 rad/s (the sphere once it rolls, after its bounces); the JSON sphere 0, the JSON cube 0.014.
         QTest::addColumn<double>("maxSpin");
         QTest::newRow("drop_e05.rlscene (UV sphere)") << "drop_e05.rlscene" << 0.1 << 2.0;
         QTest::newRow("drop_cube_e05.rlscene (cube)") << "drop_cube_e05.rlscene" << 0.1 << 0.5;
+        QTest::newRow("drop_sphere_1m_e05.rlscene") << "drop_sphere_1m_e05.rlscene" << 0.1 << 0.5;
+        QTest::newRow("drop_sphere_1.25m_e05.rlscene") << "drop_sphere_1.25m_e05.rlscene" << 0.1 << 0.5;
+        QTest::newRow("drop_cube_2m_e05.rlscene") << "drop_cube_2m_e05.rlscene" << 0.1 << 0.5;
     }
     void drop() {
         QFETCH(QString, scene);

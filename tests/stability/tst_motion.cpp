@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 using namespace rl;
 using namespace rl::test;
@@ -61,41 +62,57 @@ private slots:
     // Issue 4 asks for the first three apexes of an e = 0.5 drop within 3 % of e^(2n) h0, at default settings. The
     // restitution pass takes the speed at impact from energy on the flight the integrator follows and launches on
     // it (ContactSolver::applyRestitution()), so the apexes no longer depend on where in a step the ball lands nor
-    // on the integrator: every row below measured within 0.4 % (2026-11-26); before, the third apex was -2.1 % at
-    // 8 substeps and +3.3 % at 6. The rows hold them to 1 %.
+    // on the integrator: every row at 5 m measured within 0.4 % (2026-11-26); before, the third apex was -2.1 % at
+    // 8 substeps and +3.3 % at 6. A ball the relax sweep's speculative row stops a few millimetres short of the
+    // floor at the end of a step is launched from there with the speed it would have on its way back up
+    // (2026-12-05); launched at the floor's speed, the second apex from 1 m was 6.5 % high and the third from 1.25 m
+    // 14.8 % (frame maxima of `rigidlab-cli bake`). The heights below are the ones that went wrong, and 5 m. The rows
+    // hold the apexes to 1 % (explicit Euler's to 2 %: its third apex from 1.25 m at 4 substeps measured -1.10 %),
+    // each taken as the vertex of the parabola through the three frames around it (frame maxima alone are up to
+    // g dt^2 / 8 = 0.34 mm low, 2 % of the third apex from 1 m).
     void bounceApexHeights_data() {
+        QTest::addColumn<double>("h0");
         QTest::addColumn<int>("substeps");
         QTest::addColumn<QString>("integrator");
-        QTest::newRow("default settings") << 0 << QString();
-        for (const char* integrator : {"symplectic-euler", "explicit-euler", "verlet", "rk4"})
-            for (int substeps : {4, 6})
-                QTest::addRow("%s, %d substeps", integrator, substeps) << substeps << QString(integrator);
+        QTest::addColumn<double>("within");
+        for (const double h0 : {1.0, 1.25, 2.0, 5.0})
+            QTest::addRow("%g m, default settings", h0) << h0 << 0 << QString() << 0.01;
+        for (const double h0 : {1.25, 5.0})
+            for (const char* integrator : {"symplectic-euler", "explicit-euler", "verlet", "rk4"})
+                for (int substeps : {4, 6})
+                    QTest::addRow("%g m, %s, %d substeps", h0, integrator, substeps)
+                        << h0 << substeps << QString(integrator)
+                        << (std::string_view(integrator) == "explicit-euler" ? 0.02 : 0.01);
     }
 
     void bounceApexHeights() {
+        QFETCH(double, h0);
         QFETCH(int, substeps);
         QFETCH(QString, integrator);
-        const Real h0 = 5.0, e = 0.5;
+        QFETCH(double, within);
+        const Real e = 0.5;
         WorldOptions options;
         if (substeps > 0)
             options.substeps = substeps;
         if (!integrator.isEmpty())
             options.integrator = parseIntegrator(integrator.toStdString());
         World w = makeWorld(scenes::drop(h0, e), options);
+        std::vector<Real> heights{w.centerOfMass(1).y - 0.1}; // of the bottom of the ball, frame by frame
+        run(w, 600, [&](int) { heights.push_back(w.centerOfMass(1).y - 0.1); });
         std::vector<Real> apexes;
-        Real previousVy = 0.0;
-        run(w, 600, [&](int) {
-            const Real vy = w.linearVelocity(1).y;
-            if (previousVy > 0.0 && vy <= 0.0)
-                apexes.push_back(w.centerOfMass(1).y - 0.1); // height of the bottom of the ball
-            previousVy = vy;
-        });
+        for (size_t f = 1; f + 1 < heights.size(); ++f) {
+            const Real before = heights[f - 1], at = heights[f], after = heights[f + 1];
+            if (before <= at && at > after) {
+                const Real a = 0.5 * (before + after) - at, b = 0.5 * (after - before);
+                apexes.push_back(at - b * b / (4.0 * a));
+            }
+        }
         QVERIFY(apexes.size() >= 3);
         for (int n = 1; n <= 3; ++n) {
             const Real expected = std::pow(e, 2.0 * n) * h0;
-            qInfo("bounce %d: apex %.4f m, expected %.4f m (%.2f %%)", n, apexes[n - 1], expected,
+            qInfo("bounce %d: apex %.5f m, expected %.5f m (%.2f %%)", n, apexes[n - 1], expected,
                   100.0 * (apexes[n - 1] - expected) / expected);
-            QVERIFY(std::abs(apexes[n - 1] - expected) < 0.01 * expected);
+            QVERIFY(std::abs(apexes[n - 1] - expected) < within * expected);
         }
     }
 
@@ -287,7 +304,8 @@ private slots:
     // ramps.obj's 0.2 m cubes meet each other edge first at 5-7 m/s. With one point at the edges' witnesses, a cube
     // set spinning at 22 rad/s by the hit turned a corner 71 mm into the other within the next step; speculative
     // edge contacts now clip the faces that face each other along the axis. The deepest contact of the first two
-    // seconds is then 39.9 mm (measured; 29-47 mm over today's solver variants, as the pile's history changes):
+    // seconds is then 39.9 mm (measured; 29-47 mm over today's solver variants, as the pile's history changes; 36.5 mm
+    // on 2026-12-05; 36-59 mm over the scene and eight starts with every cube moved by up to 0.1 mm, 48-68 mm before):
     // cubes spinning at 16-22 rad/s whose separating axis turns within one step, which only re-colliding within the
     // step would catch. The bound sits between that and the old 71 mm.
     void rampsCubesMeetEdgeFirst() {

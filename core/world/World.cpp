@@ -164,6 +164,12 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
         w.m_vertexMeanOffset.push_back(props->vertexMean - props->com);
         w.m_initialShapeOrientation.push_back(orientation);
         w.m_minExtent.push_back(w.m_shapes.back().minExtent());
+        {
+            const Aabb bounds = w.m_shapes.back().localBounds();
+            Vec3 size = bounds.max - bounds.min;
+            std::sort(&size.x, &size.x + 3);
+            w.m_middleExtent.push_back(size.y);
+        }
         // Radius about the centre of mass: how fast a spinning body's surface can move. (The shape's own bounding
         // radius is about the shape origin, which for an OBJ object is the file's origin, far from the body.)
         Real radius = body.shape.type == ShapeType::Sphere ? body.shape.radius : 0.0;
@@ -908,6 +914,23 @@ int World::substepRefinement(Real massRatio) const {
     return static_cast<int>(std::clamp<Real>(k, 1.0, static_cast<Real>(m_tuning.maxSubstepRefinement)));
 }
 
+int World::sizeRefinement(Real extent) const {
+    // The same depth, F / (m_eff omega^2), is the same few tenths of a millimetre per contact whatever the bodies'
+    // size, and a stack sinks by it at every contact: 12 mm for a tower of 20 cubes. For cubes of 1 m that is
+    // nothing; for cubes of 2 cm it is most of one, and the tower fell while it settled (its top 0.38 m lower after
+    // 1 s; 3 cm cubes stood, with the top 14 mm off; measured 2026-12-05). So an island with a body smaller than
+    // refineExtent takes refineExtentSubsteps * sqrt(refineExtent / extent) substeps in all, which keeps the depth's
+    // share of the body no larger than at refineExtent. A body's size here is its middle extent, so that a stack of
+    // coins counts as small and a card standing on its edge does not: the card house (2 mm cards 0.3 m wide) stood
+    // worse with more substeps, its cards up to 3.3 mm from where they were put at 6 substeps, 8.0 mm at 24 and
+    // fallen at 48 (2026-12-05).
+    if (!(extent < m_tuning.refineExtent))
+        return 1;
+    const Real needed = m_tuning.refineExtentSubsteps * std::sqrt(m_tuning.refineExtent / std::max(extent, 1e-9));
+    const Real k = std::ceil(needed / m_substeps - 1e-9);
+    return static_cast<int>(std::clamp<Real>(k, 1.0, static_cast<Real>(m_tuning.maxSubstepRefinement)));
+}
+
 void World::heightsAboveSupport(std::span<const uint32_t> moving) {
     // A light body under a heavy one: the sweeps take the heavy body's momentum out through the light one a little
     // at a time, and the soft contact under the light body is only as stiff as suits the light mass, so a 1,000 kg
@@ -995,11 +1018,13 @@ void World::solve() {
     std::vector<uint32_t>& moving = m_moving;
     moving.clear();
     Real leastInverseMass = std::numeric_limits<Real>::max(), mostInverseMass = 0.0;
+    Real leastExtent = std::numeric_limits<Real>::max();
     for (uint32_t i = 0; i < n; ++i)
         if (m_state.isMoving(i)) {
             moving.push_back(i);
             leastInverseMass = std::min(leastInverseMass, m_state.invMass[i]);
             mostInverseMass = std::max(mostInverseMass, m_state.invMass[i]);
+            leastExtent = std::min(leastExtent, m_middleExtent[i]);
         }
     m_profile.count(Counter::AwakeBodies, moving.size());
 
@@ -1010,8 +1035,10 @@ void World::solve() {
     // island are skipped. (The inverse masses, contiguous, stand in for the masses, to their rounding: the margin
     // of 1e-9 keeps a ratio within a few bits of the limit on the per-island path. With those passes and the copy
     // of the step's start, this serial stretch took 0.18 ms a step of the 5,050-cube pyramid on two threads, now
-    // 0.01 ms, 2026-12-01.)
-    m_uniformRefinement = !(mostInverseMass > (1.0 - 1e-9) * m_tuning.refineMassRatio * leastInverseMass);
+    // 0.01 ms, 2026-12-01.) So does an island of small bodies (sizeRefinement()): none holds a body smaller than the
+    // smallest moving body anywhere.
+    m_uniformRefinement = !(mostInverseMass > (1.0 - 1e-9) * m_tuning.refineMassRatio * leastInverseMass) &&
+                          sizeRefinement(leastExtent) == 1;
     m_solverCounters = {};
     if (m_uniformRefinement) {
         m_anyHeight = false;
@@ -1023,16 +1050,19 @@ void World::solve() {
     m_refinement.assign(n, 0);
     m_islandMinMass.assign(n, std::numeric_limits<Real>::max());
     m_islandMaxMass.assign(n, 0.0);
+    m_islandMinExtent.assign(n, std::numeric_limits<Real>::max());
     for (uint32_t i : moving) {
         const uint32_t root = m_island[i];
         m_islandMinMass[root] = std::min(m_islandMinMass[root], m_state.info[i].mass);
         m_islandMaxMass[root] = std::max(m_islandMaxMass[root], m_state.info[i].mass);
+        m_islandMinExtent[root] = std::min(m_islandMinExtent[root], m_middleExtent[i]);
     }
     heightsAboveSupport(moving);
     int finest = 1;
     for (uint32_t i : moving) {
         const uint32_t root = m_island[i];
-        const int k = substepRefinement(m_islandMaxMass[root] / m_islandMinMass[root]);
+        const int k = std::max(substepRefinement(m_islandMaxMass[root] / m_islandMinMass[root]),
+                               sizeRefinement(m_islandMinExtent[root]));
         m_refinement[i] = static_cast<uint8_t>(k);
         finest = std::max(finest, k);
     }

@@ -70,6 +70,8 @@ private slots:
         // cube turned by a random angle and shifted by up to 5 cm, and the tower 500 m from the origin.
         QTest::newRow("tower20_10cm.obj") << "tower20_10cm.obj" << 0.01 << 0.01 << 0.05;
         QTest::newRow("tower20_5cm.obj") << "tower20_5cm.obj" << 0.01 << 0.01 << 0.05;
+        // 2 cm cubes in plain JSON: until 2026-12-05 this tower fell (World::sizeRefinement()).
+        QTest::newRow("tower20_2cm.rlscene") << "tower20_2cm.rlscene" << 0.01 << 0.01 << 0.05;
         QTest::newRow("tower20_gaps.obj") << "tower20_gaps.obj" << 0.01 << 0.01 << 0.25;
         QTest::newRow("tower20_jitter.obj") << "tower20_jitter.obj" << 0.01 << 0.01 << 0.05;
         QTest::newRow("tower20_far.obj") << "tower20_far.obj" << 0.01 << 0.01 << 0.05;

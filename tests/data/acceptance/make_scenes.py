@@ -315,6 +315,11 @@ for name, shape, h0 in (("drop_sphere_1m_e05.rlscene", {"sphere": 0.1}, 1.0),
     write_json(name, scene([dict(floor, restitution=0.5),
                             {"name": "Ball", "shape": shape, "position": [0, h0 + 0.1, 0], "restitution": 0.5}]))
 
+# A 20-cube tower of 2 cm cubes on the floor box, as plain JSON (it fell at the default settings until 2026-12-05).
+write_json("tower20_2cm.rlscene", scene([floor] + [
+    {"name": "Cube%d" % i, "shape": {"box": [0.01, 0.01, 0.01]}, "position": [0, 0.01 + 0.02 * i, 0]}
+    for i in range(20)]))
+
 # The 1:1000 pair with the "world" block of DESIGN.md section 6's example (substeps 4), as a reviewer copying that
 # example writes it.
 write_json("mass_pair_design_world.rlscene", dict(scene([floor,

@@ -934,15 +934,15 @@ int World::sizeRefinement(Real extent) const {
 void World::heightsAboveSupport(std::span<const uint32_t> moving) {
     // A light body under a heavy one: the sweeps take the heavy body's momentum out through the light one a little
     // at a time, and the soft contact under the light body is only as stiff as suits the light mass, so a 1,000 kg
-    // cube dropped 1 m onto a 1 kg one sank 59 mm into it for a few frames. In islands with a mass ratio above
-    // refineMassRatio, each moving body's height is the fewest contacts from it down to an immovable body (1 when it
+    // cube dropped 1 m onto a 1 kg one sank 59 mm into it for a few frames. In islands with a mass ratio of at least
+    // stackHoldRatio, each moving body's height is the fewest contacts from it down to an immovable body (1 when it
     // touches one). A contact between bodies of different heights holds the lower one still (shock propagation,
-    // Guendelman et al. 2003) when it holds the upper one up against gravity and the upper one is holdMassRatio times
-    // heavier (contactHold()), so the upper body is stopped by it as by the ground. Heights are shortest
+    // Guendelman et al. 2003) when it holds the upper one up against gravity and the upper one is stackHoldRatio
+    // times heavier (contactHold()), so the upper body is stopped by it as by the ground. Heights are shortest
     // paths, the same whatever the order of the contacts. Other islands are left as they are, to the bit.
     const auto inMixedIsland = [&](uint32_t i) {
         const uint32_t root = m_island[i];
-        return m_islandMaxMass[root] > m_tuning.refineMassRatio * m_islandMinMass[root];
+        return !(m_islandMaxMass[root] < m_tuning.stackHoldRatio * m_islandMinMass[root]);
     };
     m_anyHeight = std::any_of(moving.begin(), moving.end(), inMixedIsland);
     if (!m_anyHeight)
@@ -1000,11 +1000,16 @@ ContactSolver::Hold World::contactHold(uint32_t slot) const {
     const Real along = (lowerIsA ? 1.0 : -1.0) * glm::dot(m_contactPool[slot].manifold.normal, up);
     const Real rise = glm::dot(m_state.position[upper] - m_state.position[lower], up);
     const Real lowerMass = m_state.info[lower].mass, upperMass = m_state.info[upper].mass;
-    if (!(rise > 0.0) || m_tuning.holdMassRatio * lowerMass > upperMass || !(along >= m_tuning.wedgeRise))
+    if (!(rise > 0.0) || !(along >= m_tuning.wedgeRise))
         return {};
     const uint8_t side = lowerIsA ? ContactSolver::kHoldA : ContactSolver::kHoldB;
-    if (ha != hb && along >= std::sqrt(0.5))
+    if (ha != hb && along >= std::sqrt(0.5) && !(m_tuning.stackHoldRatio * lowerMass > upperMass))
         return {side, 0.0};
+    // Made heavier: only in an island whose mass ratio is above refineMassRatio, as all holds were until 2026-12-05.
+    const uint32_t root = m_island[lower];
+    if (!(m_islandMaxMass[root] > m_tuning.refineMassRatio * m_islandMinMass[root]) ||
+        m_tuning.holdMassRatio * lowerMass > upperMass)
+        return {};
     return {side, m_tuning.holdMassRatio * lowerMass / upperMass};
 }
 
@@ -1031,13 +1036,13 @@ void World::solve() {
     // Each island's mass ratio decides its substep count (substepRefinement()); islands are independent, so an
     // island with a light body under a heavy one can take finer substeps without making the rest of the world pay.
     // No island's ratio is above that of the heaviest and the lightest moving bodies anywhere: when that one is
-    // below refineMassRatio, every body takes the scene's substeps and no contact holds a side, and the passes per
-    // island are skipped. (The inverse masses, contiguous, stand in for the masses, to their rounding: the margin
-    // of 1e-9 keeps a ratio within a few bits of the limit on the per-island path. With those passes and the copy
-    // of the step's start, this serial stretch took 0.18 ms a step of the 5,050-cube pyramid on two threads, now
-    // 0.01 ms, 2026-12-01.) So does an island of small bodies (sizeRefinement()): none holds a body smaller than the
-    // smallest moving body anywhere.
-    m_uniformRefinement = !(mostInverseMass > (1.0 - 1e-9) * m_tuning.refineMassRatio * leastInverseMass) &&
+    // below stackHoldRatio (and so below refineMassRatio), every body takes the scene's substeps and no contact holds
+    // a side, and the passes per island are skipped. (The inverse masses, contiguous, stand in for the masses, to their
+    // rounding: the margin of 1e-9 keeps a ratio within a few bits of the limit on the per-island path. With those
+    // passes and the copy of the step's start, this serial stretch took 0.18 ms a step of the 5,050-cube pyramid on two
+    // threads, now 0.01 ms, 2026-12-01.) So does an island of small bodies (sizeRefinement()): none holds a body
+    // smaller than the smallest moving body anywhere.
+    m_uniformRefinement = !(mostInverseMass >= (1.0 - 1e-9) * m_tuning.stackHoldRatio * leastInverseMass) &&
                           sizeRefinement(leastExtent) == 1;
     m_solverCounters = {};
     if (m_uniformRefinement) {

@@ -917,8 +917,8 @@ int World::substepRefinement(Real massRatio) const {
 int World::sizeRefinement(Real extent) const {
     // The same depth, F / (m_eff omega^2), is the same few tenths of a millimetre per contact whatever the bodies'
     // size, and a stack sinks by it at every contact: 12 mm for a tower of 20 cubes. For cubes of 1 m that is
-    // nothing; for cubes of 2 cm it is most of one, and the tower fell while it settled (its top 0.38 m lower after
-    // 1 s; 3 cm cubes stood, with the top 14 mm off; measured 2026-12-05). So an island with a body smaller than
+    // nothing; for cubes of 2 cm it is more than half of one, and the tower fell while it settled (its top 0.38 m lower
+    // after 1 s; 3 cm cubes stood, with the top 14 mm off; measured 2026-12-05). So an island with a body smaller than
     // refineExtent takes refineExtentSubsteps * sqrt(refineExtent / extent) substeps in all, which keeps the depth's
     // share of the body no larger than at refineExtent. A body's size here is its middle extent, so that a stack of
     // coins counts as small and a card standing on its edge does not: the card house (2 mm cards 0.3 m wide) stood

@@ -433,7 +433,7 @@ private:
     std::vector<uint8_t> m_refinement; // per body: its island's substep multiplier this step, 0 when not moving
     std::vector<Real> m_islandMinMass, m_islandMaxMass;
     std::vector<Real> m_islandMinExtent; // per island root: the least middle extent of its moving bodies
-    // Per body, for islands with a mass ratio above refineMassRatio: the fewest contacts down to an immovable body
+    // Per body, for islands with a mass ratio of at least stackHoldRatio: the fewest contacts down to an immovable body
     // (anchor or sleeper), 1 when it touches one; 0 elsewhere or with no path (see World::heightsAboveSupport()).
     std::vector<uint32_t> m_height;
     bool m_anyHeight = false;

@@ -952,22 +952,47 @@ void World::heightsAboveSupport(std::span<const uint32_t> moving) {
     for (uint32_t i : moving)
         if (inMixedIsland(i))
             m_height[i] = kUnknown;
-    for (const auto& [a, b] : m_touchingBodies) {
-        if (m_height[a] == kUnknown && !m_state.isMoving(b))
+    // A body rests on its nearest contacts: one farther off than its nearest by more than supportGap (a speculative
+    // contact that a fast body would meet only after going through the nearer one) does not support it. A 1,000 kg
+    // cube of 1 m falling at 9.8 m/s onto a 1 kg cube of 10 cm had contacts 8 cm above the small cube and 18 cm
+    // above the floor; counted as resting on the floor, it was only made heavier against the small cube (not held
+    // by it), crushed it into the floor, and both flew up at 3.4 m/s.
+    const size_t contacts = m_touchingBodies.size();
+    m_contactGap.resize(contacts);
+    m_nearestGap.assign(m_state.size(), std::numeric_limits<Real>::max());
+    for (size_t k = 0; k < contacts; ++k) {
+        const Manifold& manifold = m_contactPool[m_touchingContacts[k]].manifold;
+        Real gap = std::numeric_limits<Real>::max();
+        for (int p = 0; p < manifold.pointCount; ++p)
+            gap = std::min(gap, manifold.points[p].separation);
+        m_contactGap[k] = gap;
+        const auto [a, b] = m_touchingBodies[k];
+        m_nearestGap[a] = std::min(m_nearestGap[a], gap);
+        m_nearestGap[b] = std::min(m_nearestGap[b], gap);
+    }
+    const auto supports = [&](size_t k, uint32_t body) {
+        return !(m_contactGap[k] > m_nearestGap[body] + m_tuning.supportGap);
+    };
+    for (size_t k = 0; k < contacts; ++k) {
+        const auto [a, b] = m_touchingBodies[k];
+        if (m_height[a] == kUnknown && !m_state.isMoving(b) && supports(k, a))
             m_height[a] = 1;
-        if (m_height[b] == kUnknown && !m_state.isMoving(a))
+        if (m_height[b] == kUnknown && !m_state.isMoving(a) && supports(k, b))
             m_height[b] = 1;
     }
     for (bool changed = true; changed;) {
         changed = false;
-        for (const auto& [a, b] : m_touchingBodies) {
+        for (size_t k = 0; k < contacts; ++k) {
+            const auto [a, b] = m_touchingBodies[k];
             if (m_height[a] == 0 || m_height[b] == 0)
                 continue; // not both in such an island
-            if (m_height[a] != kUnknown && (m_height[b] == kUnknown || m_height[a] + 1 < m_height[b])) {
+            if (m_height[a] != kUnknown && (m_height[b] == kUnknown || m_height[a] + 1 < m_height[b]) &&
+                supports(k, b)) {
                 m_height[b] = m_height[a] + 1;
                 changed = true;
             }
-            if (m_height[b] != kUnknown && (m_height[a] == kUnknown || m_height[b] + 1 < m_height[a])) {
+            if (m_height[b] != kUnknown && (m_height[a] == kUnknown || m_height[b] + 1 < m_height[a]) &&
+                supports(k, a)) {
                 m_height[a] = m_height[b] + 1;
                 changed = true;
             }

@@ -93,6 +93,9 @@ struct WorldTuning {
     // flat into a light cube on the floor still sends it off (2.68 m/s instead of 2.76 m/s).
     Real holdMassRatio = 10.0;
     Real stackHoldRatio = 2.0;
+    // A contact supports a body in the heights of shock propagation only if it is at most this much (m) farther
+    // apart than the body's nearest contact (World::heightsAboveSupport()): half the speculative distance.
+    Real supportGap = 0.01;
     Real wedgeRise = 0.2;
     // Sweeps of the relax pass per substep (the solve pass runs `iterations` sweeps). The relax pass removes the
     // push-apart velocity of the soft solve. One sweep leaves the velocities of a resting pile unconverged: a box on a
@@ -436,6 +439,8 @@ private:
     // Per body, for islands with a mass ratio of at least stackHoldRatio: the fewest contacts down to an immovable body
     // (anchor or sleeper), 1 when it touches one; 0 elsewhere or with no path (see World::heightsAboveSupport()).
     std::vector<uint32_t> m_height;
+    std::vector<Real> m_contactGap; // per touching contact: its least separation (heightsAboveSupport())
+    std::vector<Real> m_nearestGap; // per body: the least separation of its touching contacts
     bool m_anyHeight = false;
     // This step: no two moving bodies far enough apart in mass for any island to take finer substeps (solve()); then
     // m_refinement is not filled and every moving body is in the one group.

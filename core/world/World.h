@@ -96,6 +96,8 @@ struct WorldTuning {
     // A contact supports a body in the heights of shock propagation only if it is at most this much (m) farther
     // apart than the body's nearest contact (World::heightsAboveSupport()): half the speculative distance.
     Real supportGap = 0.01;
+    // A lower body whose surface moves into the upper one faster than this (m/s) is not held (World::contactHold()).
+    Real holdRiseSpeed = 3.0;
     Real wedgeRise = 0.2;
     // Sweeps of the relax pass per substep (the solve pass runs `iterations` sweeps). The relax pass removes the
     // push-apart velocity of the soft solve. One sweep leaves the velocities of a resting pile unconverged: a box on a

@@ -346,98 +346,96 @@ bool solveImpactRows(ImpactRows& rows) {
             if (std::popcount(set) == size && set != guess)
                 order[sets++] = set;
     for (int attempt = 0; attempt < sets; ++attempt) {
-        {
-            const unsigned set = order[attempt];
-            const int size = std::popcount(set);
-            int index[4], m = 0;
-            for (int i = 0; i < n; ++i)
-                if (set & (1u << i))
-                    index[m++] = i;
-            // K_SS lambda_S = -w0_S.
-            Real A[4][5], x[4];
+        const unsigned set = order[attempt];
+        const int size = std::popcount(set);
+        int index[4], m = 0;
+        for (int i = 0; i < n; ++i)
+            if (set & (1u << i))
+                index[m++] = i;
+        // K_SS lambda_S = -w0_S.
+        Real A[4][5], x[4];
+        for (int r = 0; r < m; ++r) {
+            for (int c = 0; c < m; ++c)
+                A[r][c] = K[index[r]][index[c]];
+            A[r][m] = -w0[index[r]];
+        }
+        if (!eliminate(A, m, tiny, x))
+            continue;
+        Real lambda[4] = {0.0, 0.0, 0.0, 0.0};
+        for (int r = 0; r < m; ++r)
+            lambda[index[r]] = x[r];
+        Real total = 0.0;
+        for (int i = 0; i < n; ++i)
+            total += std::abs(lambda[i]);
+        bool fits = std::isfinite(total);
+        for (int i = 0; i < n && fits; ++i) {
+            if (set & (1u << i)) {
+                fits = lambda[i] >= -1e-9 * (total + pushed);
+            } else {
+                Real w = w0[i];
+                for (int j = 0; j < n; ++j)
+                    w += K[i][j] * lambda[j];
+                fits = w >= -slack;
+            }
+        }
+        if (!fits)
+            continue;
+        for (int i = 0; i < n; ++i)
+            lambda[i] = std::max(lambda[i], 0.0);
+        // A flat face's four points (or three in a line) make a singular block: a body has three ways to move
+        // along a plane's normal, not four. A set one row smaller answers it, e.g. two opposite corners of a
+        // square, and any impulses z with K z = 0 can be added without changing a velocity. Where the row
+        // left out is on its target too (within nearTarget of the speed to take off), the answer keeps the one
+        // nearest to sharing alike (the least sum of squares, every impulse at least zero): the next substep
+        // starts warm from these impulses, and two corners of a square holding the whole weight set the cube
+        // turning about its diagonal as the sweeps shared them out again.
+        int out = 0;
+        while (out < n && (set & (1u << out)))
+            ++out;
+        Real outAbove = out < n ? w0[out] : 0.0;
+        for (int j = 0; j < n && out < n; ++j)
+            outAbove += K[out][j] * lambda[j];
+        constexpr Real nearTarget = 1e-3;
+        if (size == n - 1 && n > 1 && outAbove <= nearTarget * scale + slack) {
             for (int r = 0; r < m; ++r) {
                 for (int c = 0; c < m; ++c)
                     A[r][c] = K[index[r]][index[c]];
-                A[r][m] = -w0[index[r]];
+                A[r][m] = -K[index[r]][out];
             }
-            if (!eliminate(A, m, tiny, x))
-                continue;
-            Real lambda[4] = {0.0, 0.0, 0.0, 0.0};
-            for (int r = 0; r < m; ++r)
-                lambda[index[r]] = x[r];
-            Real total = 0.0;
-            for (int i = 0; i < n; ++i)
-                total += std::abs(lambda[i]);
-            bool fits = std::isfinite(total);
-            for (int i = 0; i < n && fits; ++i) {
-                if (set & (1u << i)) {
-                    fits = lambda[i] >= -1e-9 * (total + pushed);
-                } else {
-                    Real w = w0[i];
-                    for (int j = 0; j < n; ++j)
-                        w += K[i][j] * lambda[j];
-                    fits = w >= -slack;
-                }
-            }
-            if (!fits)
-                continue;
-            for (int i = 0; i < n; ++i)
-                lambda[i] = std::max(lambda[i], 0.0);
-            // A flat face's four points (or three in a line) make a singular block: a body has three ways to move
-            // along a plane's normal, not four. A set one row smaller answers it, e.g. two opposite corners of a
-            // square, and any impulses z with K z = 0 can be added without changing a velocity. Where the row
-            // left out is on its target too (within nearTarget of the speed to take off), the answer keeps the one
-            // nearest to sharing alike (the least sum of squares, every impulse at least zero): the next substep
-            // starts warm from these impulses, and two corners of a square holding the whole weight set the cube
-            // turning about its diagonal as the sweeps shared them out again.
-            int out = 0;
-            while (out < n && (set & (1u << out)))
-                ++out;
-            Real outAbove = out < n ? w0[out] : 0.0;
-            for (int j = 0; j < n && out < n; ++j)
-                outAbove += K[out][j] * lambda[j];
-            constexpr Real nearTarget = 1e-3;
-            if (size == n - 1 && n > 1 && outAbove <= nearTarget * scale + slack) {
+            Real z[4] = {0.0, 0.0, 0.0, 0.0}, y[4];
+            bool nullVector = eliminate(A, m, tiny, y);
+            if (nullVector) {
+                for (int r = 0; r < m; ++r)
+                    z[index[r]] = y[r];
+                z[out] = 1.0;
+                // K z = 0 on the set's rows by construction; on the row left out only if the block is singular.
+                Real residual = K[out][out], size1 = 1.0;
                 for (int r = 0; r < m; ++r) {
-                    for (int c = 0; c < m; ++c)
-                        A[r][c] = K[index[r]][index[c]];
-                    A[r][m] = -K[index[r]][out];
+                    residual += K[out][index[r]] * y[r];
+                    size1 += std::abs(y[r]);
                 }
-                Real z[4] = {0.0, 0.0, 0.0, 0.0}, y[4];
-                bool nullVector = eliminate(A, m, tiny, y);
-                if (nullVector) {
-                    for (int r = 0; r < m; ++r)
-                        z[index[r]] = y[r];
-                    z[out] = 1.0;
-                    // K z = 0 on the set's rows by construction; on the row left out only if the block is singular.
-                    Real residual = K[out][out], size1 = 1.0;
-                    for (int r = 0; r < m; ++r) {
-                        residual += K[out][index[r]] * y[r];
-                        size1 += std::abs(y[r]);
-                    }
-                    nullVector = std::abs(residual) <= 1e-9 * largest * size1;
-                }
-                if (nullVector) {
-                    Real lz = 0.0, zz = 0.0, lo = -std::numeric_limits<Real>::infinity(),
-                         hi = std::numeric_limits<Real>::infinity();
-                    for (int i = 0; i < n; ++i) {
-                        lz += lambda[i] * z[i];
-                        zz += z[i] * z[i];
-                        if (z[i] > 0.0)
-                            lo = std::max(lo, -lambda[i] / z[i]);
-                        else if (z[i] < 0.0)
-                            hi = std::min(hi, -lambda[i] / z[i]);
-                    }
-                    const Real alpha = lo <= hi ? std::clamp(-lz / zz, lo, hi) : 0.0;
-                    if (std::isfinite(alpha))
-                        for (int i = 0; i < n; ++i)
-                            lambda[i] = std::max(lambda[i] + alpha * z[i], 0.0);
-                }
+                nullVector = std::abs(residual) <= 1e-9 * largest * size1;
             }
-            for (int i = 0; i < n; ++i)
-                rows.impulse[i] = lambda[i];
-            return true;
+            if (nullVector) {
+                Real lz = 0.0, zz = 0.0, lo = -std::numeric_limits<Real>::infinity(),
+                     hi = std::numeric_limits<Real>::infinity();
+                for (int i = 0; i < n; ++i) {
+                    lz += lambda[i] * z[i];
+                    zz += z[i] * z[i];
+                    if (z[i] > 0.0)
+                        lo = std::max(lo, -lambda[i] / z[i]);
+                    else if (z[i] < 0.0)
+                        hi = std::min(hi, -lambda[i] / z[i]);
+                }
+                const Real alpha = lo <= hi ? std::clamp(-lz / zz, lo, hi) : 0.0;
+                if (std::isfinite(alpha))
+                    for (int i = 0; i < n; ++i)
+                        lambda[i] = std::max(lambda[i] + alpha * z[i], 0.0);
+            }
         }
+        for (int i = 0; i < n; ++i)
+            rows.impulse[i] = lambda[i];
+        return true;
     }
     return false;
 }
@@ -1146,15 +1144,8 @@ void solveConstraint(ContactConstraint& c, SolverBody& a, SolverBody& b, bool us
                 const ContactConstraint::Point& p = c.points[k];
                 if (!(p.normalMass > 0.0))
                     continue; // as the batches' empty point slots
-                const Real s = separation(p);
-                Real bias = 0.0;
-                if (s > 0.0) {
-                    bias = s * inverseH;
-                } else if (useBias) {
-                    bias = std::max(soft.biasRate * s, -settings.maxPushoutSpeed);
-                    rows.softness[rows.count] = soft.impulseScale / (soft.massScale * p.normalMass);
-                }
-                rows.target[rows.count] = -bias;
+                setImpactTarget(rows, rows.count, separation(p), useBias, inverseH, soft, settings.maxPushoutSpeed,
+                                p.normalMass);
                 rows.angularA[rows.count] = kStaticA ? Vec3(0.0) : angularOf(p.rA, c.normal);
                 rows.inertiaA[rows.count] = kStaticA ? Vec3(0.0) : inertiaOf(ia, p.rA, c.normal);
                 rows.angularB[rows.count] = kStaticB ? Vec3(0.0) : angularOf(p.rB, c.normal);

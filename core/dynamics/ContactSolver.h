@@ -63,6 +63,21 @@ struct ImpactRows {
     Real impulse[4] = {};  // in: the accumulated impulses; out: the new ones, where solveImpactRows() succeeds
     unsigned guess = 0;    // bit i: row i is likely pushing in the answer (tried first; any guess gives the answer)
 };
+// Row i's target and give in such a block from its separation s now, as a sweep takes them: a speculative row
+// (s > 0) may close the gap within the substep; a touching one is soft while the bias pushes it apart (short of its
+// target by impulseScale / (massScale * normalMass) times its impulse, where repeated sweeps leave it), and rigid in
+// the relax pass.
+inline void setImpactTarget(ImpactRows& rows, int i, Real s, bool useBias, Real inverseH, const Softness& soft,
+                            Real maxPushoutSpeed, Real normalMass) {
+    Real bias = 0.0;
+    if (s > 0.0) {
+        bias = s * inverseH;
+    } else if (useBias) {
+        bias = std::max(soft.biasRate * s, -maxPushoutSpeed);
+        rows.softness[i] = soft.impulseScale / (soft.massScale * normalMass);
+    }
+    rows.target[i] = -bias;
+}
 // Finds the accumulated impulses, all at least zero, with which every row ends at its target or above it with no
 // impulse (a linear complementarity problem); false, with impulse unchanged, where no set of pushing rows gives
 // that (only where the block is degenerate: a problem of this kind has an answer).

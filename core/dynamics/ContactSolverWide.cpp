@@ -611,15 +611,8 @@ RL_LANES_INLINE void solveStruck(StoreT& store, const BatchT& batch, Side<typena
             const auto& p = store.points[first + k];
             if (!(static_cast<Real>(p.mass.v[l]) > 0.0))
                 continue; // an empty point slot, or a point with no mass
-            const Real s = store.separation[first + k].v[l];
-            Real bias = 0.0;
-            if (s > 0.0) {
-                bias = s * inverseH;
-            } else if (useBias) {
-                bias = std::max(soft.biasRate * s, -settings.maxPushoutSpeed);
-                block.softness[block.count] = soft.impulseScale / (soft.massScale * static_cast<Real>(p.mass.v[l]));
-            }
-            block.target[block.count] = -bias;
+            setImpactTarget(block, block.count, store.separation[first + k].v[l], useBias, inverseH, soft,
+                            settings.maxPushoutSpeed, static_cast<Real>(p.mass.v[l]));
             const auto lane3 = [l](const L3<V>& x) { return Vec3(x.x[l], x.y[l], x.z[l]); };
             block.angularA[block.count] = staticA ? Vec3(0.0) : lane3(rows[k].angularA);
             block.inertiaA[block.count] = staticA ? Vec3(0.0) : lane3(rows[k].inertiaA);

@@ -163,7 +163,7 @@ Result<uint32_t> BodyState::addBody(const BodyInit& init) {
     invInertia.push_back(inverseInertia);
     linearDamping.push_back(init.linearDamping);
     angularDamping.push_back(init.angularDamping);
-    flags.push_back(init.isStatic ? uint8_t(kBodyStatic) : uint8_t(kBodyAwake));
+    flags.push_back(static_cast<uint8_t>((init.isStatic ? kBodyStatic : kBodyAwake) | (init.round ? kBodyRound : 0)));
     smoothLinearVelocity.push_back(Vec3(0.0));
     smoothDisplacement.push_back(Vec3(0.0));
     smoothAngularVelocity.push_back(Vec3(0.0));

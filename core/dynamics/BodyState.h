@@ -15,6 +15,9 @@ namespace rl {
 enum BodyFlag : uint8_t {
     kBodyStatic = 1u << 0, // infinite mass and inertia; never integrated
     kBodyAwake = 1u << 1,  // integrated and solved; a sleeping body is skipped until something wakes it
+    // A ball about its centre of mass: where a contact holds it, its surface stays where its centre puts it however it
+    // turns, so the solver measures the contacts' separations without its rotation (SolverBody::dR is the identity).
+    kBodyRound = 1u << 2,
 };
 
 // Why the inertia is stored as a diagonal in the principal frame (and not as a full body-frame tensor):
@@ -65,6 +68,7 @@ struct BodyInit {
     Real linearDamping = 0.0;          // 1/s, added to the world's
     Real angularDamping = 0.0;         // 1/s, added to the world's
     bool isStatic = false;
+    bool round = false; // kBodyRound
 };
 
 struct BodyState {
@@ -119,6 +123,7 @@ struct BodyState {
     bool isAwake(uint32_t i) const { return (flags[i] & kBodyAwake) != 0; }
     // Awake and not static: the bodies the integrators move.
     bool isMoving(uint32_t i) const { return (flags[i] & (kBodyStatic | kBodyAwake)) == kBodyAwake; }
+    bool isRound(uint32_t i) const { return (flags[i] & kBodyRound) != 0; }
 
     Mat3 worldInverseInertia(uint32_t i) const;
     // The three inverse moments agree to 1e-12 relative: worldInverseInertia() is then the first times the identity

@@ -138,6 +138,7 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
         init.orientation = orientation;
         init.comInShape = glm::conjugate(orientation) * (props->com - body.position);
         init.isStatic = body.anchor;
+        init.round = body.shape.type == ShapeType::Sphere; // (its centre of mass is its centre)
         init.mass = body.anchor ? 0.0 : props->mass;
         init.inertia = props->inertia;
         // Principal moments that agree to kIsotropicSpread are the rounding of a written mesh (a cube exported with
@@ -1800,8 +1801,10 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
                 integratePositions(local, mine, h, m_gravity, m_damping, m_integrator, rotation);
                 for (const uint32_t k : mine) {
                     bodies[k + 1].dp = local.position[k] - scratch.startPosition[k];
-                    bodies[k + 1].dR = glm::mat3_cast(
-                        glm::normalize(local.orientation[k] * glm::conjugate(scratch.startOrientation[k])));
+                    bodies[k + 1].dR = local.isRound(k)
+                                           ? Mat3(1.0)
+                                           : glm::mat3_cast(glm::normalize(
+                                                 local.orientation[k] * glm::conjugate(scratch.startOrientation[k])));
                     if (rotation)
                         bodies[k + 1].invInertia = local.worldInverseInertia(k);
                 }

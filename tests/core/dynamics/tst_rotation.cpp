@@ -654,8 +654,9 @@ void TestRotation::symplecticPositionsForSolverAreTheStepsNumbers() {
     // several bodies at a time (IntegratorWide.cpp). It must give the bits of the steps it stands for, taken one after
     // the other through the public calls: the solver's velocities into the bodies, integratePositions(), then the
     // motion since the step began and the inverse inertia at the new pose. 21 bodies in an order of their own (two
-    // vectors of eight and a tail): T-handles (full inverse inertia), cubes (isotropic), a sleeper, bodies at rest,
-    // and some turning more than 0.02 rad in the substep (the sine and cosine instead of the series). The start poses
+    // vectors of eight and a tail): T-handles (full inverse inertia), cubes (isotropic), balls (round: dR stays the
+    // identity while they turn), a sleeper, bodies at rest, and some turning more than 0.02 rad in the substep (the
+    // sine and cosine instead of the series). The start poses
     // are turned well away from the bodies' poses, so that the quaternion products' terms are of one size and any
     // change in their order shows in the roundings (a reordered product failed here, tried).
     QFETCH(int, lanes);
@@ -671,6 +672,7 @@ void TestRotation::symplecticPositionsForSolverAreTheStepsNumbers() {
         if (cube) {
             init.mass = 2.0;
             init.inertia = Mat3(0.1);
+            init.round = b % 7 == 2; // a ball
         }
         QVERIFY(state.addBody(init).ok());
         SolverBody s;
@@ -698,7 +700,9 @@ void TestRotation::symplecticPositionsForSolverAreTheStepsNumbers() {
     for (const uint32_t k : order) {
         expected[k + 1].dp = stepped.position[k] - startPosition[k];
         expected[k + 1].dR =
-            glm::mat3_cast(glm::normalize(stepped.orientation[k] * glm::conjugate(startOrientation[k])));
+            stepped.isRound(k)
+                ? Mat3(1.0)
+                : glm::mat3_cast(glm::normalize(stepped.orientation[k] * glm::conjugate(startOrientation[k])));
         if (rotation)
             expected[k + 1].invInertia = stepped.worldInverseInertia(k);
     }
@@ -719,6 +723,11 @@ void TestRotation::symplecticPositionsForSolverAreTheStepsNumbers() {
     QVERIFY(fused.position[0] != state.position[0]);
     QVERIFY(rotation == (fused.orientation[0] != state.orientation[0]));
     QVERIFY(turnedFar > 0);
+    for (const uint32_t k : {2u, 16u}) { // the balls turned, and their contacts' anchors did not
+        QVERIFY(fused.isRound(k) && !fused.isRound(k + 1));
+        QVERIFY(rotation == (fused.orientation[k] != state.orientation[k]));
+        QVERIFY(got[k + 1].dR == Mat3(1.0));
+    }
 }
 
 void TestRotation::symplecticVelocitiesForSolverAreTheStepsNumbers() {

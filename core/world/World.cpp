@@ -67,6 +67,20 @@ uint32_t evenShare(size_t n, size_t (&load)[2]) {
     return static_cast<uint32_t>(share);
 }
 
+// The least distance from `centre` to a face's plane over the greatest distance to a vertex of a solid polyhedron: 1
+// for a ball, cos(pi / n) for a fine one whose faces span 2 pi / n, 1/sqrt(3) for a cube about its centre; 0 for a
+// flat shape or a centre outside.
+Real roundness(const ConvexPolyhedron& p, const Vec3& centre) {
+    if (p.flat)
+        return 0.0;
+    Real inner = std::numeric_limits<Real>::max(), outer = 0.0;
+    for (const PolyFace& f : p.faces)
+        inner = std::min(inner, f.offset - glm::dot(f.normal, centre));
+    for (const Vec3& v : p.vertices)
+        outer = std::max(outer, glm::length(v - centre));
+    return outer > 0.0 ? std::max(inner, 0.0) / outer : 0.0;
+}
+
 } // namespace
 
 size_t World::s_runBodies = World::kRunBodies;
@@ -139,6 +153,15 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
         init.comInShape = glm::conjugate(orientation) * (props->com - body.position);
         init.isStatic = body.anchor;
         init.round = body.shape.type == ShapeType::Sphere; // (its centre of mass is its centre)
+        if (!body.anchor && shape->kind == ShapeKind::Polyhedron) {
+            // A ball made of faces. The anchors of the face it lies on turn with it and follow the surface while it
+            // turns through less than about one face (2 acos(roundness) seen from the centre); turned farther within
+            // a step, they rise off while faces that were not in contact come down unseen, and it sinks. Held round,
+            // it sinks at most by how much nearer the centre its faces are than its corners.
+            const Real r = roundness(*shape->polyhedron, init.comInShape);
+            if (r >= w.m_tuning.ballHullRoundness)
+                w.m_ballHulls.emplace_back(static_cast<uint32_t>(i), 2.0 * std::acos(r) * w.m_fps);
+        }
         init.mass = body.anchor ? 0.0 : props->mass;
         init.inertia = props->inertia;
         // Principal moments that agree to kIsotropicSpread are the rounding of a written mesh (a cube exported with
@@ -1062,6 +1085,12 @@ void World::solve() {
     moving.clear();
     Real leastInverseMass = std::numeric_limits<Real>::max(), mostInverseMass = 0.0;
     Real leastExtent = std::numeric_limits<Real>::max();
+    for (const auto& [i, spin] : m_ballHulls) { // round in a step in which it turns through a face or more
+        if (glm::length(m_state.angularVelocity[i]) > spin)
+            m_state.flags[i] |= kBodyRound;
+        else
+            m_state.flags[i] &= static_cast<uint8_t>(~kBodyRound);
+    }
     for (uint32_t i = 0; i < n; ++i)
         if (m_state.isMoving(i)) {
             moving.push_back(i);

@@ -2,6 +2,8 @@
 
 #include "geometry/MassProperties.h"
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -197,6 +199,23 @@ Result<BodyInit> bodyInitFromHull(const ConvexHull& hull, Real density, const Ve
 bool BodyState::hasIsotropicInverseInertia(uint32_t i) const {
     const Vec3 d = invInertia[i];
     return std::abs(d.y - d.x) <= 1e-12 * d.x && std::abs(d.z - d.x) <= 1e-12 * d.x;
+}
+
+Mat3 BodyState::anchorTurn(uint32_t i, const Quat& startOrientation) const {
+    const Quat turn = glm::normalize(orientation[i] * glm::conjugate(startOrientation));
+    if (!isRound(i))
+        return glm::mat3_cast(turn);
+    const Vec3& rollAxis = info[i].rollAxis;
+    if (rollAxis == Vec3(0.0))
+        return Mat3(1.0);
+    // turn = swing * twist, twist about the axis as it was at the step's start.
+    const Vec3 axis = startOrientation * rollAxis;
+    const Vec3 along = glm::dot(Vec3(turn.x, turn.y, turn.z), axis) * axis;
+    const Real length = std::sqrt(turn.w * turn.w + glm::dot(along, along));
+    if (!(length > 1e-12)) // half a turn about an axis across it: no twist
+        return glm::mat3_cast(turn);
+    const Quat twist(turn.w / length, along.x / length, along.y / length, along.z / length);
+    return glm::mat3_cast(turn * glm::conjugate(twist));
 }
 
 Mat3 BodyState::worldInverseInertia(uint32_t i) const {

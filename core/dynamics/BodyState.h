@@ -15,8 +15,9 @@ namespace rl {
 enum BodyFlag : uint8_t {
     kBodyStatic = 1u << 0, // infinite mass and inertia; never integrated
     kBodyAwake = 1u << 1,  // integrated and solved; a sleeping body is skipped until something wakes it
-    // A ball about its centre of mass: where a contact holds it, its surface stays where its centre puts it however it
-    // turns, so the solver measures the contacts' separations without its rotation (SolverBody::dR is the identity).
+    // Round: where a contact holds it, its surface stays where its centre puts it however it turns (a ball), or
+    // however it turns about BodyInfo::rollAxis (a cylinder, a cone), so the solver measures the contacts' separations
+    // without that rotation (anchorTurn()).
     kBodyRound = 1u << 2,
 };
 
@@ -53,6 +54,8 @@ struct BodyInfo {
     Vec3 principalMoments{0.0};               // kg m^2, in the order of the principal frame's axes
     Quat shapeFromPrincipal = identityQuat(); // rotation from shape coordinates to the principal frame
     Vec3 comInShape{0.0};                     // centre of mass in shape coordinates
+    // Principal-frame unit axis about which the shape is round (kBodyRound), or zero: round about every axis.
+    Vec3 rollAxis{0.0};
 };
 
 // What a new body needs. Inertia is a full tensor about the centre of mass in *world* axes at the given orientation,
@@ -125,6 +128,10 @@ struct BodyState {
     bool isMoving(uint32_t i) const { return (flags[i] & (kBodyStatic | kBodyAwake)) == kBodyAwake; }
     bool isRound(uint32_t i) const { return (flags[i] & kBodyRound) != 0; }
 
+    // The rotation the contact solver turns body i's anchors by since the step began, when it was at
+    // `startOrientation`: its turn normalize(q q0*), or for a round body none of it (round about every axis) or the
+    // turn without its part about rollAxis (the swing of a swing-twist split).
+    Mat3 anchorTurn(uint32_t i, const Quat& startOrientation) const;
     Mat3 worldInverseInertia(uint32_t i) const;
     // The three inverse moments agree to 1e-12 relative: worldInverseInertia() is then the first times the identity
     // in every pose.

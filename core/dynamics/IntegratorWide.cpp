@@ -29,9 +29,7 @@ void positionsForSolverOne(BodyState& state, uint32_t k, Real dt, bool rotationE
         }
     }
     solver.dp = state.position[k] - startPosition;
-    solver.dR = state.isRound(k)
-                    ? Mat3(1.0)
-                    : glm::mat3_cast(glm::normalize(state.orientation[k] * glm::conjugate(startOrientation)));
+    solver.dR = state.anchorTurn(k, startOrientation);
     if (rotationEnabled)
         solver.invInertia = state.worldInverseInertia(k);
 }
@@ -173,8 +171,8 @@ RL_LANES_INLINE void positionsForSolverLanes(BodyState& state, const uint32_t* i
         }
         state.position[k] = Vec3(px[l], py[l], pz[l]);
         s.dp = state.position[k] - startPosition[k];
-        s.dR =
-            state.isRound(k) ? Mat3(1.0) : Mat3(m00[l], m01[l], m02[l], m10[l], m11[l], m12[l], m20[l], m21[l], m22[l]);
+        s.dR = state.isRound(k) ? state.anchorTurn(k, startOrientation[k])
+                                : Mat3(m00[l], m01[l], m02[l], m10[l], m11[l], m12[l], m20[l], m21[l], m22[l]);
         if (rotationEnabled) // (what worldInverseInertia() gives an isotropic body, without the call)
             s.invInertia = s.isotropic ? Mat3(state.invInertia[k].x) : state.worldInverseInertia(k);
     }

@@ -100,8 +100,10 @@ struct WorldTuning {
     Real holdRiseSpeed = 3.0;
     // A hull whose faces are all at least this fraction of its farthest corner's distance from the centre of mass (a
     // UV sphere, an icosphere from Blender) is a ball to the solver (kBodyRound) in a step in which it turns through
-    // more than the angle one face spans seen from that centre (World::create(), World::solve()).
-    Real ballHullRoundness = 0.9;
+    // more than the angle one face spans seen from that centre; one whose support distances change by at most 1 - this
+    // fraction of its radius as it turns about an axis (a cylinder, a cone) is round about that axis in a step in
+    // which it turns about it through more than one face (World::create(), World::solve()).
+    Real roundHullRoundness = 0.9;
     Real wedgeRise = 0.2;
     // Sweeps of the relax pass per substep (the solve pass runs `iterations` sweeps). The relax pass removes the
     // push-apart velocity of the soft solve. One sweep leaves the velocities of a resting pile unconverged: a box on a
@@ -401,9 +403,14 @@ private:
     std::vector<Real> m_minExtent;
     std::vector<Real> m_middleExtent; // per body: the middle one of its shape's three extents (sizeRefinement())
     std::vector<Real> m_radius;       // largest distance from the centre of mass to the surface
-    // Hulls shaped like balls (WorldTuning::ballHullRoundness), each with the spin (rad/s) above which it is round in
-    // a step.
-    std::vector<std::pair<uint32_t, Real>> m_ballHulls;
+    // Hulls shaped like balls, cylinders or cones (WorldTuning::roundHullRoundness): each with the spin (rad/s, about
+    // its axis if it has one) above which it is round in a step, and that axis (principal frame; zero for a ball).
+    struct RoundHull {
+        uint32_t body = 0;
+        Real spin = 0.0;
+        Vec3 axis{0.0};
+    };
+    std::vector<RoundHull> m_roundHulls;
     CombineRule m_frictionRule = CombineRule::GeometricMean;
     CombineRule m_restitutionRule = CombineRule::Max;
 

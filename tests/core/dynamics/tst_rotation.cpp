@@ -157,6 +157,7 @@ private slots:
     void gatheredBodiesIntegrateAsInPlace();
     void listedSymplecticBodiesIntegrateAsRanges_data();
     void listedSymplecticBodiesIntegrateAsRanges();
+    void anchorTurnLeavesOutTheRoundPart();
     void symplecticPositionsForSolverAreTheStepsNumbers_data();
     void symplecticPositionsForSolverAreTheStepsNumbers();
     void symplecticVelocitiesForSolverAreTheStepsNumbers_data() {
@@ -674,7 +675,10 @@ void TestRotation::symplecticPositionsForSolverAreTheStepsNumbers() {
             init.inertia = Mat3(0.1);
             init.round = b % 7 == 2; // a ball
         }
+        init.round = init.round || b == 3 || b == 12; // T-handles round about their principal z axis (below)
         QVERIFY(state.addBody(init).ok());
+        if (b == 3 || b == 12)
+            state.info.back().rollAxis = Vec3(0.0, 0.0, 1.0);
         SolverBody s;
         s.isotropic = cube; // as the world marks them
         s.v = b % 5 == 4 ? Vec3(0.0) : Vec3(0.1 * b, -2.0 + 0.05 * b, 0.3);
@@ -699,10 +703,7 @@ void TestRotation::symplecticPositionsForSolverAreTheStepsNumbers() {
                        rotation);
     for (const uint32_t k : order) {
         expected[k + 1].dp = stepped.position[k] - startPosition[k];
-        expected[k + 1].dR =
-            stepped.isRound(k)
-                ? Mat3(1.0)
-                : glm::mat3_cast(glm::normalize(stepped.orientation[k] * glm::conjugate(startOrientation[k])));
+        expected[k + 1].dR = stepped.anchorTurn(k, startOrientation[k]);
         if (rotation)
             expected[k + 1].invInertia = stepped.worldInverseInertia(k);
     }
@@ -724,9 +725,48 @@ void TestRotation::symplecticPositionsForSolverAreTheStepsNumbers() {
     QVERIFY(rotation == (fused.orientation[0] != state.orientation[0]));
     QVERIFY(turnedFar > 0);
     for (const uint32_t k : {2u, 16u}) { // the balls turned, and their contacts' anchors did not
-        QVERIFY(fused.isRound(k) && !fused.isRound(k + 1));
+        QVERIFY(fused.isRound(k) && !fused.isRound(k - 1));
         QVERIFY(rotation == (fused.orientation[k] != state.orientation[k]));
         QVERIFY(got[k + 1].dR == Mat3(1.0));
+    }
+    for (const uint32_t k : {3u, 12u}) { // round about an axis: the anchors turned, by less than the body
+        const Mat3 full = glm::mat3_cast(glm::normalize(fused.orientation[k] * glm::conjugate(startOrientation[k])));
+        QVERIFY(fused.isRound(k) && got[k + 1].dR != Mat3(1.0) && got[k + 1].dR != full);
+    }
+}
+
+void TestRotation::anchorTurnLeavesOutTheRoundPart() {
+    // A body turned by a swing (about an axis across its roll axis) after a twist (about the roll axis, as it was at
+    // the start): the anchors of a body round about that axis turn by the swing alone, those of a ball not at all,
+    // those of any other body by the whole turn.
+    const RigidData handle = tHandle();
+    BodyState state;
+    for (int b = 0; b < 3; ++b) {
+        BodyInit init = movingHandle(handle, b);
+        init.round = b > 0;
+        QVERIFY(state.addBody(init).ok());
+    }
+    state.info[1].rollAxis = Vec3(0.0, 1.0, 0.0); // round about its principal y axis; body 2 about every axis
+    for (const Real twistAngle : {0.0, 0.3, 2.5, -3.0}) {
+        for (const Real swingAngle : {0.0, 0.2, 1.4}) {
+            for (uint32_t k = 0; k < 3; ++k) {
+                const Quat start = glm::normalize(Quat(0.9, 0.1 * k, -0.3, 0.2));
+                state.orientation[k] = start;
+                const Vec3 axis = start * Vec3(0.0, 1.0, 0.0);
+                const Vec3 across = glm::normalize(glm::cross(axis, Vec3(0.3, 0.1, 1.0)));
+                const Quat swing = glm::angleAxis(swingAngle, across), twist = glm::angleAxis(twistAngle, axis);
+                state.orientation[k] = glm::normalize(swing * twist * start);
+                const Mat3 got = state.anchorTurn(k, start);
+                const Mat3 want = k == 0   ? glm::mat3_cast(glm::normalize(swing * twist))
+                                  : k == 1 ? glm::mat3_cast(swing)
+                                           : Mat3(1.0);
+                for (int c = 0; c < 3; ++c)
+                    for (int r = 0; r < 3; ++r)
+                        QVERIFY2(
+                            std::abs(got[c][r] - want[c][r]) < 1e-12,
+                            qPrintable(QString("body %1, twist %2, swing %3").arg(k).arg(twistAngle).arg(swingAngle)));
+            }
+        }
     }
 }
 

@@ -159,6 +159,73 @@ private slots:
             QVERIFY(m.z - m.x > 0.0); // the rounding made the moments differ
     }
 
+    // Hulls round about every axis (a UV sphere) or about one (prisms and cones of eight sides or more) are found by
+    // their shape, and are round to the solver in a step in which they turn through more than one face: 100 rad/s is
+    // 1.7 rad a step, 5 rad/s 0.08 (a face of 32 spans 0.20 rad, of 8 0.79). A hexagonal prism (faces 0.87 of its
+    // corners' distance from the axis) and a square one are not round.
+    void roundHullsAreFoundByTheirShape_data() {
+        QTest::addColumn<QString>("shape");
+        QTest::addColumn<bool>("aboutAxis"); // spun about the shape's axis, or across it
+        QTest::addColumn<Real>("spin");
+        QTest::addColumn<bool>("round");
+        QTest::newRow("32-sided cylinder, 100 rad/s about its axis") << "prism 32" << true << 100.0 << true;
+        QTest::newRow("32-sided cylinder, 100 rad/s across") << "prism 32" << false << 100.0 << false;
+        QTest::newRow("32-sided cylinder, 5 rad/s about its axis") << "prism 32" << true << 5.0 << false;
+        QTest::newRow("8-sided prism, 100 rad/s about its axis") << "prism 8" << true << 100.0 << true;
+        QTest::newRow("6-sided prism, 100 rad/s about its axis") << "prism 6" << true << 100.0 << false;
+        QTest::newRow("32-sided cone, 100 rad/s about its axis") << "cone 32" << true << 100.0 << true;
+        QTest::newRow("square prism, 100 rad/s") << "prism 4" << true << 100.0 << false;
+        QTest::newRow("UV sphere, 100 rad/s") << "sphere" << false << 100.0 << true;
+        QTest::newRow("UV sphere, 5 rad/s") << "sphere" << false << 5.0 << false;
+    }
+    void roundHullsAreFoundByTheirShape() {
+        QFETCH(QString, shape);
+        QFETCH(bool, aboutAxis);
+        QFETCH(Real, spin);
+        QFETCH(bool, round);
+        const Mat3 turn = glm::mat3_cast(glm::angleAxis(0.7, glm::normalize(Vec3(1.0, 2.0, 3.0))));
+        const Vec3 axis = turn * Vec3(0.0, 0.0, 1.0);
+        const int sides = shape.section(' ', 1).toInt();
+        std::vector<Vec3> points;
+        if (shape == "sphere") { // 16 segments, 8 rings
+            for (int ring = 0; ring <= 8; ++ring)
+                for (int segment = 0; segment < (ring % 8 == 0 ? 1 : 16); ++segment) {
+                    const Real theta = kPi * ring / 8.0, phi = 2.0 * kPi * segment / 16.0;
+                    points.push_back(
+                        0.3 * Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)));
+                }
+        } else {
+            for (int side = 0; side < sides; ++side) {
+                const Vec3 rim(0.3 * std::cos(2.0 * kPi * side / sides), 0.3 * std::sin(2.0 * kPi * side / sides), 0.0);
+                points.push_back(rim + Vec3(0.0, 0.0, -0.2));
+                if (shape.startsWith("prism"))
+                    points.push_back(rim + Vec3(0.0, 0.0, 0.2));
+            }
+            if (shape.startsWith("cone"))
+                points.push_back(Vec3(0.0, 0.0, 0.5));
+        }
+        Scene s;
+        s.world.gravity = Vec3(0.0);
+        BodyDef body;
+        body.name = "Round";
+        body.shape.type = ShapeType::Hull;
+        for (const Vec3& p : points)
+            body.shape.points.push_back(turn * p);
+        body.angularVelocity = spin * (aboutAxis ? axis : glm::normalize(glm::cross(axis, Vec3(1.0, 0.0, 0.0))));
+        s.bodies.push_back(body);
+        World w = makeWorld(s);
+        w.step();
+        const BodyState& state = w.state();
+        const Vec3 rollAxis = state.orientation[0] * state.info[0].rollAxis;
+        qInfo("%s: round %d, roll axis (%.3f, %.3f, %.3f), shape axis (%.3f, %.3f, %.3f)", qPrintable(shape),
+              state.isRound(0), rollAxis.x, rollAxis.y, rollAxis.z, axis.x, axis.y, axis.z);
+        QCOMPARE(state.isRound(0), round);
+        if (shape == "sphere")
+            QVERIFY(state.info[0].rollAxis == Vec3(0.0));
+        else if (round)
+            QVERIFY(std::abs(glm::dot(rollAxis, axis)) > 1.0 - 1e-9);
+    }
+
     void stackOfTenStands() {
         Result<Scene> s = importScene(RL_SOURCE_DIR "/resources/scenes/stack.obj");
         QVERIFY(s.ok());

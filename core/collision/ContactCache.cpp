@@ -9,6 +9,7 @@ int warmStart(const Manifold& previous, Manifold& current, const ContactCacheOpt
         current.points[i].normalImpulse = 0.0;
     current.frictionImpulse = Vec3(0.0);
     current.twistImpulse = 0.0;
+    current.heldImpulses = previous.heldImpulses; // (the impulses carried keep what they were solved with)
     if (previous.pointCount == 0 || glm::dot(previous.normal, current.normal) < options.minNormalCosine)
         return 0;
     bool used[4] = {false, false, false, false};

@@ -29,6 +29,9 @@ struct Manifold {
     // (world axes, in the contact plane) and the twist impulse about the normal, carried for warm starting.
     Vec3 frictionImpulse{0.0};
     Real twistImpulse = 0.0;
+    // The impulses were solved with a side held still or made heavier (shock propagation, World::contactHold()):
+    // they start no step in which the contact does not hold, where they would fall on the light side whole.
+    bool heldImpulses = false;
 };
 
 } // namespace rl

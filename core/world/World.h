@@ -366,6 +366,23 @@ private:
     // For a contact of a mixed island (m_anyHeight): the hold on its lower body (still, or heavier: see
     // WorldTuning::holdMassRatio), or none.
     ContactSolver::Hold contactHold(uint32_t slot) const;
+    // Which body of a contact between moving bodies is the lower one (heightsAboveSupport()), and whether the contact
+    // could hold it like the ground under the upper one (contactHold()), before looking at how it moves.
+    struct HoldGeometry {
+        bool lowerIsA = false;
+        uint32_t lower = 0, upper = 0;
+        Vec3 towardUpper{0.0}; // the normal, from the lower body to the upper one
+        Real along = 0.0;      // towardUpper's rise
+        bool valid = false;    // both at a height, the upper one above, the normal at least wedgeRise above horizontal
+        bool stopsUpper = false; // and different heights, the normal within 45 degrees of vertical, the upper body
+                                 // stackHoldRatio times heavier: held unless it rises into the upper one
+    };
+    HoldGeometry holdGeometry(uint32_t slot) const;
+    // Whether the lower body's surface moves into the upper one faster than WorldTuning::holdRiseSpeed at a point.
+    bool risingInto(uint32_t slot, const HoldGeometry& g) const;
+    // An inelastic impulse at the contact's fastest closing point, repeated while the lower body rises into the
+    // upper one (heightsAboveSupport()).
+    void meetRisingLowerBody(uint32_t slot);
     void continuousCollision();
     void updateSleep();
     Real pairMargin(uint32_t a, uint32_t b) const;

@@ -170,11 +170,12 @@ private slots:
         QVERIFY(lower.y > 0.5 * lowerEdge - 0.005);
     }
 
-    // A light body that rises into a heavy one is not held under it (World::contactHold()): held, it pushes the heavy
-    // one up as an immovable body would. A 463 kg cube falling 0.8 m onto a 0.128 kg box of 1.2 m that was still
-    // bouncing on the floor (e = 0.6), turning at 10 rad/s, was thrown up at up to 35 m/s, the scene's energy rising
-    // to 3.4 times its start at 57ad949 and 25 times at 3802b6c (2026-12-05).
-    void aRisingLightBodyIsNotHeld() {
+    // A light body that rises into a heavy one is not held under it as it moves (World::contactHold()): held so, it
+    // pushes the heavy one up as an immovable body would. A 463 kg cube falling 0.8 m onto a 0.128 kg box of 1.2 m
+    // that was still bouncing on the floor (e = 0.6), turning at 10 rad/s, was thrown up at up to 35 m/s, the scene's
+    // energy rising to 3.4 times its start at 57ad949 and 25 times at 3802b6c (2026-12-05). (It first meets the heavy
+    // one, World::meetRisingLowerBody(), and is then held: see aRisingLightBallIsNotCrushed.)
+    void aRisingLightBodyGivesTheHeavyOneNoEnergy() {
         Scene s = scenes::massRatio(0.128, 463.572);
         s.bodies[0].restitution = 0.6;
         s.bodies[1].shape.halfExtents = Vec3(0.3807752409455521, 0.48222264844574453, 0.6105456818717845);
@@ -201,6 +202,58 @@ private slots:
         QVERIFY(stats.allFinite);
         QVERIFY(highest <= start + 0.01 * fall);
         QVERIFY(fastest < 10.0);
+    }
+
+    // A 3 kg ball that has just bounced off the floor rises into a 580 kg one falling onto it. Not held while it rose
+    // (above), it was crushed into the floor as the sweeps took the heavy ball's momentum out through it a little at
+    // a time: 43-83 mm in the last four rows (and 110 mm in a random scene of Blender-like shapes, 2026-12-05). Now
+    // the two first meet in an inelastic impulse along the normal (World::meetRisingLowerBody()), and the light ball
+    // is then held under the heavy one like the ground: 0.03-3.1 mm deep. Two things had to go with it: the impulses
+    // of a held contact warm start no step in which it does not hold (in 12 such throws, 4 gained energy, one 17
+    // times its start, the fourth row here 89 %, when a 1,368 N s warm start fell on the 3 kg ball), and a body
+    // rests only on contacts that can bear it up (heightsAboveSupport(): the ball's floor contact, farther than the
+    // heavy ball's above it, did not count, so its hold came and went; the first row sank 20 mm).
+    void aRisingLightBallIsNotCrushed_data() {
+        QTest::addColumn<Real>("rise");
+        QTest::addColumn<Real>("fall");
+        QTest::addColumn<Real>("restitution");
+        QTest::newRow("2 m/s up, 6 m/s down, e 0") << 2.0 << 6.0 << 0.0;
+        QTest::newRow("4 m/s up, 6 m/s down, e 0") << 4.0 << 6.0 << 0.0;
+        QTest::newRow("4 m/s up, 12 m/s down, e 0.3") << 4.0 << 12.0 << 0.3;
+        QTest::newRow("8 m/s up, 6 m/s down, e 0.3") << 8.0 << 6.0 << 0.3;
+        QTest::newRow("8 m/s up, 12 m/s down, e 0") << 8.0 << 12.0 << 0.0;
+    }
+    void aRisingLightBallIsNotCrushed() {
+        QFETCH(Real, rise);
+        QFETCH(Real, fall);
+        QFETCH(Real, restitution);
+        Scene s = scenes::drop(0.0005, restitution);
+        s.bodies[1].mass = 3.0;
+        s.bodies[1].velocity = Vec3(0.0, rise, 0.0);
+        BodyDef heavy = s.bodies[1];
+        heavy.name = "Heavy";
+        heavy.shape.radius = 0.45;
+        heavy.mass = 580.0;
+        heavy.position = Vec3(0.02, 0.8, 0.0);
+        heavy.velocity = Vec3(0.0, -fall, 0.0);
+        s.bodies.push_back(heavy);
+        World w = makeWorld(s);
+        const auto energy = [&] {
+            const FrameDiagnostics d = w.diagnostics();
+            return d.kineticEnergy + d.potentialEnergy;
+        };
+        const Real start = energy();
+        Real lowest = 1.0, highest = start;
+        const RunStats stats = run(w, 120, [&](int) {
+            lowest = std::min(lowest, w.centerOfMass(1).y - 0.1);
+            highest = std::max(highest, energy());
+        });
+        qInfo("3 kg ball rising at %.0f m/s into a 580 kg one falling at %.0f m/s, e %.1f: lowest %.2f mm, energy at "
+              "most %+.4f %% of its start",
+              rise, fall, restitution, 1e3 * lowest, 100.0 * (highest - start) / start);
+        QVERIFY(stats.allFinite);
+        QVERIFY(lowest > -5e-3);
+        QVERIFY(highest <= start * 1.0001);
     }
 
     // A held body is held only against gravity: a 1,000 kg block sliding on a frictionless plate into a 1 kg cube on

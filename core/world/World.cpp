@@ -1082,8 +1082,17 @@ void World::heightsAboveSupport(std::span<const uint32_t> moving) {
     // 4 m/s into a 580 kg one falling at 12 m/s was driven 110 mm into the floor. So the two first meet: an inelastic
     // impulse along the normal at the contact's fastest closing point stops the light body's rise into the heavy one
     // (momentum kept, energy only lost), and the contact then holds it like the ground.
-    for (size_t k = 0; k < contacts; ++k)
-        meetRisingLowerBody(m_touchingContacts[k]);
+    // (Only bodies whose surface can move that fast: in a pile of 1,000 boxes, calling it for every contact cost 2 %
+    // of the step.)
+    const auto mayRise = [&](uint32_t i) {
+        return glm::length(m_state.linearVelocity[i]) + glm::length(m_state.angularVelocity[i]) * m_radius[i] >
+               m_tuning.holdRiseSpeed;
+    };
+    for (size_t k = 0; k < contacts; ++k) {
+        const auto [a, b] = m_touchingBodies[k];
+        if (m_height[a] != 0 && m_height[b] != 0 && (mayRise(a) || mayRise(b)))
+            meetRisingLowerBody(m_touchingContacts[k]);
+    }
 }
 
 void World::meetRisingLowerBody(uint32_t slot) {

@@ -133,6 +133,10 @@ struct BodyState {
     // turn without its part about rollAxis (the swing of a swing-twist split).
     Mat3 anchorTurn(uint32_t i, const Quat& startOrientation) const;
     Mat3 worldInverseInertia(uint32_t i) const;
+    // Velocity of the body's material point at `point` (world): v + w x (point - centre of mass).
+    Vec3 pointVelocity(uint32_t i, const Vec3& point) const {
+        return linearVelocity[i] + glm::cross(angularVelocity[i], point - position[i]);
+    }
     // The three inverse moments agree to 1e-12 relative: worldInverseInertia() is then the first times the identity
     // in every pose.
     bool hasIsotropicInverseInertia(uint32_t i) const;

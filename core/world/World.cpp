@@ -1107,11 +1107,9 @@ void World::meetRisingLowerBody(uint32_t slot) {
         int at = -1;
         for (int p = 0; p < manifold.pointCount; ++p) {
             const Vec3& x = manifold.points[p].position;
-            const Vec3 vl =
-                m_state.linearVelocity[lower] + glm::cross(m_state.angularVelocity[lower], x - m_state.position[lower]);
-            const Vec3 vu =
-                m_state.linearVelocity[upper] + glm::cross(m_state.angularVelocity[upper], x - m_state.position[upper]);
-            if (const Real rate = glm::dot(vl - vu, g.towardUpper); rate > closing) {
+            if (const Real rate =
+                    glm::dot(m_state.pointVelocity(lower, x) - m_state.pointVelocity(upper, x), g.towardUpper);
+                rate > closing) {
                 closing = rate;
                 at = p;
             }
@@ -1160,9 +1158,8 @@ World::HoldGeometry World::holdGeometry(uint32_t slot) const {
 
 bool World::risingInto(uint32_t slot, const HoldGeometry& g) const {
     const Manifold& manifold = m_contactPool[slot].manifold;
-    const Vec3 v = m_state.linearVelocity[g.lower], w = m_state.angularVelocity[g.lower];
     for (int k = 0; k < manifold.pointCount; ++k)
-        if (glm::dot(v + glm::cross(w, manifold.points[k].position - m_state.position[g.lower]), g.towardUpper) >
+        if (glm::dot(m_state.pointVelocity(g.lower, manifold.points[k].position), g.towardUpper) >
             m_tuning.holdRiseSpeed)
             return true;
     return false;
@@ -1737,7 +1734,8 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
                 manifold.frictionImpulse = Vec3(0.0);
                 manifold.twistImpulse = 0.0;
             }
-            manifold.heldImpulses = hold.side != 0;
+            if (manifold.heldImpulses != (hold.side != 0)) // (no store for the contacts that never hold)
+                manifold.heldImpulses = hold.side != 0;
             scratch.held[k] = hold;
         }
     });

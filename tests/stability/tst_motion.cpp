@@ -260,9 +260,9 @@ private slots:
     // its own (WorldTuning::roundHullRoundness), and sinks at most by how much nearer its faces are than its corners,
     // 0.5-1 % of its radius here. Before (2026-12-05), the balls dipped 9.1, 10.2, 4.0 and 12.9 mm, and the
     // cylinders rolled in hops of up to 199 and 116 mm off the floor and dipped 19.5 and 13.5 mm; now the balls dip
-    // 0.5-0.9 mm, the cylinders none, and they hop 4.4 and 3.6 mm. In a sweep of 108 balls thrown (UV spheres of 32 and 16 segments, icospheres of
-    // 80 and 320 faces; 0.1, 0.3 and 1 m; 5, 10 and 20 m/s; three starts each) the deepest dip went from 25.7 mm to
-    // 14.0 mm, and the throws dipping more than 5 mm from 31 to 12.
+    // 0.5-0.9 mm, the cylinders none, and they hop 4.4 and 3.6 mm. In a sweep of 108 balls thrown (UV spheres of 32 and
+    // 16 segments, icospheres of 80 and 320 faces; 0.1, 0.3 and 1 m; 5, 10 and 20 m/s; three starts each) the deepest
+    // dip went from 25.7 mm to 14.0 mm, and the throws dipping more than 5 mm from 31 to 12.
     void rollingRoundHullStaysOnTheFloor_data() {
         QTest::addColumn<QString>("shape");
         QTest::addColumn<Real>("radius");

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace rl {
@@ -400,6 +401,51 @@ bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, cons
     return true;
 }
 
+// How far a point outside a shape is from its surface along the unit direction d: the ray's entry distance, or none
+// if the ray misses the shape or starts inside it. A flat polygon is hit within its outline, from either side.
+std::optional<Real> distanceAlong(const Shape& s, const Transform& xf, const Vec3& origin, const Vec3& d) {
+    if (s.kind == ShapeKind::Sphere) {
+        const Vec3 m = origin - xf.position;
+        const Real b = glm::dot(m, d), c = glm::dot(m, m) - s.radius * s.radius;
+        const Real disc = b * b - c;
+        if (!(c > 0.0) || !(b < 0.0) || !(disc >= 0.0))
+            return std::nullopt;
+        return -b - std::sqrt(disc);
+    }
+    const ConvexPolyhedron& p = *s.polyhedron;
+    const Vec3 o = xf.applyInverse(origin), dir = xf.rotateInverse(d);
+    if (p.flat) {
+        const PolyFace& f = p.faces[0];
+        const Real along = glm::dot(f.normal, dir), height = glm::dot(f.normal, o) - f.offset;
+        if (!(std::abs(along) > 1e-12) || !(height * along < 0.0))
+            return std::nullopt;
+        const Real t = -height / along;
+        const Vec3 x = o + t * dir;
+        for (uint32_t k = 0; k < f.count; ++k) {
+            const Vec3& v0 = p.vertices[p.faceVertices[f.first + k]];
+            const Vec3& v1 = p.vertices[p.faceVertices[f.first + (k + 1) % f.count]];
+            if (glm::dot(glm::cross(v1 - v0, x - v0), f.normal) < 0.0)
+                return std::nullopt;
+        }
+        return t;
+    }
+    Real enter = 0.0, exit = std::numeric_limits<Real>::max();
+    bool outside = false;
+    for (const PolyFace& f : p.faces) {
+        const Real along = glm::dot(f.normal, dir), height = glm::dot(f.normal, o) - f.offset;
+        outside = outside || height > 0.0;
+        if (along < 0.0)
+            enter = std::max(enter, -height / along);
+        else if (along > 0.0)
+            exit = std::min(exit, -height / along);
+        else if (height > 0.0)
+            return std::nullopt;
+    }
+    if (!outside || !(enter <= exit))
+        return std::nullopt;
+    return enter;
+}
+
 } // namespace
 
 int reduceContactPoints(const Vec3* p, const Real* sep, int count, const Vec3& normal, int chosen[4]) {
@@ -538,6 +584,77 @@ bool collide(const Shape& a, const Transform& xfA, const Shape& b, const Transfo
         return true;
     }
     return collidePolyhedra(a, xfA, b, xfB, spec, out, options);
+}
+
+void addTurnedSupports(const Shape& a, const Transform& xfA, const Quat& turnA, const Shape& b, const Transform& xfB,
+                       const Quat& turnB, Manifold& m) {
+    if (m.pointCount == 0)
+        return;
+    const Vec3 n = m.normal;
+    const Quat none(1.0, 0.0, 0.0, 0.0);
+    const bool turnsA = a.polyhedron && turnA != none, turnsB = b.polyhedron && turnB != none;
+    if (!turnsA && !turnsB)
+        return;
+    // How much nearer the other side a point of a side comes by a turn q of that side (about its centre of mass).
+    const auto closing = [&](int side, const Quat& q, const Vec3& p) {
+        const Transform& xf = side == 0 ? xfA : xfB;
+        const Vec3 r = p - xf.position;
+        return glm::dot(side == 0 ? n : -n, q * r - r);
+    };
+    const auto witness = [&](const ContactPoint& c, int side) {
+        return c.position + (side == 0 ? -0.5 : 0.5) * c.separation * n;
+    };
+    // The gap of a point once both sides have turned half of their turns, or all.
+    const auto halfA = glm::normalize(glm::slerp(none, turnA, 0.5)),
+               halfB = glm::normalize(glm::slerp(none, turnB, 0.5));
+    const auto turnedGap = [&](const ContactPoint& c, bool half) {
+        return c.separation - (turnsA ? closing(0, half ? halfA : turnA, witness(c, 0)) : 0.0) -
+               (turnsB ? closing(1, half ? halfB : turnB, witness(c, 1)) : 0.0);
+    };
+    std::array<ContactPoint, 8> all;
+    int count = m.pointCount;
+    std::copy(m.points.begin(), m.points.begin() + count, all.begin());
+    for (int side = 0; side < 2; ++side) {
+        if (!(side == 0 ? turnsA : turnsB))
+            continue;
+        const Shape& s = side == 0 ? a : b;
+        const Transform& xf = side == 0 ? xfA : xfB;
+        const Vec3 into = side == 0 ? n : -n; // towards the other side
+        for (const bool half : {true, false}) {
+            const Quat q = side == 0 ? (half ? halfA : turnA) : (half ? halfB : turnB);
+            const uint32_t index = s.polyhedron->supportIndex(glm::transpose(glm::mat3_cast(q) * xf.rotation) * into);
+            const Vec3 p = xf.apply(s.polyhedron->vertices[index]);
+            // Its gap now, along the normal to the other side's surface; none if it would land beside it.
+            const std::optional<Real> along = distanceAlong(side == 0 ? b : a, side == 0 ? xfB : xfA, p, into);
+            if (!along)
+                continue;
+            const Real gap = *along;
+            ContactPoint c;
+            const Vec3 pa = side == 0 ? p : p - gap * n;
+            const Vec3 pb = side == 0 ? p + gap * n : p;
+            setPoint(c, pa, pb, gap, featureHash(kTagSingle + 64 + side, index, 0, 0), xfA, xfB);
+            // Kept only if it comes nearer than every point there by a clear margin.
+            Real least = std::numeric_limits<Real>::max();
+            for (int k = 0; k < count; ++k)
+                least = std::min(least, turnedGap(all[k], half));
+            if (turnedGap(c, half) < least - 1e-3)
+                all[count++] = c;
+        }
+    }
+    if (count == m.pointCount)
+        return;
+    // Four of them, as a manifold is reduced (the nearest, then the largest area), the nearest by the gaps at the end
+    // of the turns.
+    std::array<Vec3, 8> positions;
+    std::array<Real, 8> gaps;
+    for (int k = 0; k < count; ++k) {
+        positions[k] = all[k].position;
+        gaps[k] = turnedGap(all[k], false);
+    }
+    int chosen[4];
+    m.pointCount = reduceContactPoints(positions.data(), gaps.data(), count, n, chosen);
+    for (int k = 0; k < m.pointCount; ++k)
+        m.points[k] = all[chosen[k]];
 }
 
 } // namespace rl

@@ -43,6 +43,18 @@ struct CollideOptions {
 bool collide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, Real speculativeDistance,
              Manifold& out, const CollideOptions& options = {});
 
+// Points for the corners a turning body brings into contact within the step. A manifold holds the features nearest at
+// the step's start; a hull turning fast (a tumbling cone's rim, of which the reduction keeps four corners; a cylinder
+// tumbling end over end) brings others down within the step, which the solver, following the manifold's anchors as
+// they turn, does not see until the next step, after they have gone in. For each side with a turn (its rotation over
+// the step about its centre of mass, the origin of its transform; identity for none), the corner nearest the other
+// side in the pose half way through the turn and in the turned pose is a candidate; it counts if, turned, it comes
+// nearer than every point of the manifold by more than 1 mm, and if the other shape is straight ahead of it along the
+// normal (its gap is that distance: a corner over nothing is left out). The manifold is then reduced to four again
+// as collide() does, the nearest by the gaps once turned. Spheres and empty manifolds are left alone.
+void addTurnedSupports(const Shape& a, const Transform& xfA, const Quat& turnA, const Shape& b, const Transform& xfB,
+                       const Quat& turnB, Manifold& m);
+
 // The reduction on its own, for the tests: picks up to 4 of `count` points lying on a plane with unit normal
 // `normal`: the deepest, then the farthest touching point if any other touches while some are apart, then greedily
 // the largest area, then single swaps while the area grows. On 500 random sets of touching points tst_manifold

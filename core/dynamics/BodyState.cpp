@@ -201,21 +201,32 @@ bool BodyState::hasIsotropicInverseInertia(uint32_t i) const {
     return std::abs(d.y - d.x) <= 1e-12 * d.x && std::abs(d.z - d.x) <= 1e-12 * d.x;
 }
 
+Quat withoutTwist(const Quat& turn, const Vec3& axis) {
+    // turn = swing * twist, twist about the axis.
+    const Vec3 along = glm::dot(Vec3(turn.x, turn.y, turn.z), axis) * axis;
+    const Real length = std::sqrt(turn.w * turn.w + glm::dot(along, along));
+    if (!(length > 1e-12)) // half a turn about an axis across it: no twist
+        return turn;
+    const Quat twist(turn.w / length, along.x / length, along.y / length, along.z / length);
+    return turn * glm::conjugate(twist);
+}
+
+Quat BodyState::anchorTurnQuat(uint32_t i, const Quat& turn, const Quat& startOrientation) const {
+    if (!isRound(i))
+        return turn;
+    const Vec3& rollAxis = info[i].rollAxis;
+    if (rollAxis == Vec3(0.0))
+        return Quat(1.0, 0.0, 0.0, 0.0);
+    return withoutTwist(turn, startOrientation * rollAxis); // the axis as it was at the step's start
+}
+
 Mat3 BodyState::anchorTurn(uint32_t i, const Quat& startOrientation) const {
     const Quat turn = glm::normalize(orientation[i] * glm::conjugate(startOrientation));
     if (!isRound(i))
         return glm::mat3_cast(turn);
-    const Vec3& rollAxis = info[i].rollAxis;
-    if (rollAxis == Vec3(0.0))
+    if (info[i].rollAxis == Vec3(0.0))
         return Mat3(1.0);
-    // turn = swing * twist, twist about the axis as it was at the step's start.
-    const Vec3 axis = startOrientation * rollAxis;
-    const Vec3 along = glm::dot(Vec3(turn.x, turn.y, turn.z), axis) * axis;
-    const Real length = std::sqrt(turn.w * turn.w + glm::dot(along, along));
-    if (!(length > 1e-12)) // half a turn about an axis across it: no twist
-        return glm::mat3_cast(turn);
-    const Quat twist(turn.w / length, along.x / length, along.y / length, along.z / length);
-    return glm::mat3_cast(turn * glm::conjugate(twist));
+    return glm::mat3_cast(anchorTurnQuat(i, turn, startOrientation));
 }
 
 Mat3 BodyState::worldInverseInertia(uint32_t i) const {

@@ -74,6 +74,9 @@ struct BodyInit {
     bool round = false; // kBodyRound
 };
 
+// The swing of a turn split as swing * twist, the twist about the unit axis.
+Quat withoutTwist(const Quat& turn, const Vec3& axis);
+
 struct BodyState {
     // ---- hot: swept by the integrators and the solver every substep, indexed by body ----
     std::vector<Vec3> position;        // centre of mass, world
@@ -132,6 +135,8 @@ struct BodyState {
     // `startOrientation`: its turn normalize(q q0*), or for a round body none of it (round about every axis) or the
     // turn without its part about rollAxis (the swing of a swing-twist split).
     Mat3 anchorTurn(uint32_t i, const Quat& startOrientation) const;
+    // The same for a turn `turn` from `startOrientation` that the body has not taken yet (a prediction).
+    Quat anchorTurnQuat(uint32_t i, const Quat& turn, const Quat& startOrientation) const;
     Mat3 worldInverseInertia(uint32_t i) const;
     // Velocity of the body's material point at `point` (world): v + w x (point - centre of mass).
     Vec3 pointVelocity(uint32_t i, const Vec3& point) const {

@@ -239,6 +239,11 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
             std::sort(&size.x, &size.x + 3);
             w.m_middleExtent.push_back(size.y);
         }
+        {
+            const Shape& s = w.m_shapes.back();
+            w.m_turnsThroughFeatures.push_back(
+                static_cast<uint8_t>(!body.anchor && s.polyhedron && !s.polyhedron->isBox && !s.polyhedron->flat));
+        }
         // Radius about the centre of mass: how fast a spinning body's surface can move. (The shape's own bounding
         // radius is about the shape origin, which for an OBJ object is the file's origin, far from the body.)
         Real radius = body.shape.type == ShapeType::Sphere ? body.shape.radius : 0.0;
@@ -358,7 +363,21 @@ void World::step() {
     }
 }
 
+void World::updateRoundHulls() {
+    // Set before the narrowphase, which predicts the turns of bodies that are not round (collidePair()); nothing
+    // changes a velocity between here and the solve.
+    for (const RoundHull& r : m_roundHulls) { // round in a step in which it turns through a face or more
+        const uint32_t i = r.body;
+        const Vec3& w = m_state.angularVelocity[i];
+        if ((r.axis == Vec3(0.0) ? glm::length(w) : std::abs(glm::dot(w, m_state.orientation[i] * r.axis))) > r.spin)
+            m_state.flags[i] |= kBodyRound;
+        else
+            m_state.flags[i] &= static_cast<uint8_t>(~kBodyRound);
+    }
+}
+
 void World::stepOnce() {
+    updateRoundHulls();
     {
         StageTimer t(m_profile, Stage::UpdateBroadphase);
         refreshTransforms();
@@ -660,6 +679,18 @@ void World::collidePair(uint32_t slot, Real margin) {
     fresh.bodyA = a;
     fresh.bodyB = b;
     collide(m_shapes[a], xfA, m_shapes[b], xfB, margin, fresh);
+    if (fresh.pointCount > 0 && (m_turnsThroughFeatures[a] || m_turnsThroughFeatures[b])) {
+        const Real dt = 1.0 / m_fps;
+        const auto turn = [&](uint32_t i) {
+            const Vec3& w = m_state.angularVelocity[i];
+            const Real speed = glm::length(w);
+            if (!m_turnsThroughFeatures[i] || !(speed * dt * m_radius[i] > 1e-3)) // no corner moves 1 mm
+                return Quat(1.0, 0.0, 0.0, 0.0);
+            // What the solver's anchors will turn by (round bodies: none, or the swing about their roll axis).
+            return m_state.anchorTurnQuat(i, glm::angleAxis(speed * dt, w / speed), m_state.orientation[i]);
+        };
+        addTurnedSupports(m_shapes[a], xfA, turn(a), m_shapes[b], xfB, turn(b), fresh);
+    }
     const bool flat =
         (m_shapes[a].isPolyhedral() && m_shapes[a].isFlat()) || (m_shapes[b].isPolyhedral() && m_shapes[b].isFlat());
     c.separatingAxis = fresh.pointCount == 0 && !flat && glm::dot(fresh.normal, fresh.normal) > 0.5
@@ -1204,14 +1235,6 @@ void World::solve() {
     moving.clear();
     Real leastInverseMass = std::numeric_limits<Real>::max(), mostInverseMass = 0.0;
     Real leastExtent = std::numeric_limits<Real>::max();
-    for (const RoundHull& r : m_roundHulls) { // round in a step in which it turns through a face or more
-        const uint32_t i = r.body;
-        const Vec3& w = m_state.angularVelocity[i];
-        if ((r.axis == Vec3(0.0) ? glm::length(w) : std::abs(glm::dot(w, m_state.orientation[i] * r.axis))) > r.spin)
-            m_state.flags[i] |= kBodyRound;
-        else
-            m_state.flags[i] &= static_cast<uint8_t>(~kBodyRound);
-    }
     for (uint32_t i = 0; i < n; ++i)
         if (m_state.isMoving(i)) {
             moving.push_back(i);

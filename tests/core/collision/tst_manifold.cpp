@@ -50,6 +50,17 @@ Real quadAreaY(const Vec3 p[4]) {
     return best;
 }
 
+// A disc of 32 sides, 0.4 m in radius and 0.1 m thick, about its centre (a hull, not a box).
+Shape discShape() {
+    std::vector<Vec3> points;
+    for (int k = 0; k < 32; ++k) {
+        const Real phi = 2.0 * kPi * k / 32.0;
+        for (const Real y : {-0.05, 0.05})
+            points.push_back(Vec3(0.4 * std::cos(phi), y, 0.4 * std::sin(phi)));
+    }
+    return mustShape(makeHull(computeConvexHull(points)));
+}
+
 } // namespace
 
 class TestManifold : public QObject {
@@ -559,6 +570,97 @@ private slots:
             for (int i = 0; i < 4; ++i)
                 QVERIFY(std::abs(m.points[i].separation + 0.001) < 1e-9);
         }
+    }
+
+    // addTurnedSupports(): a disc of 32 sides tilted above a floor, to be turned so that its far rim comes down.
+    // The manifold at the start holds the near rim; with the turn it also holds the corner that comes lowest,
+    // measured against the floor's surface straight along the normal.
+    void turnedSupportsHoldTheCornerATurnBringsDown_data() {
+        QTest::addColumn<bool>("flatFloor");
+        QTest::addColumn<Real>("turn");
+        QTest::newRow("box floor, 0.6 rad") << false << 0.6;
+        QTest::newRow("box floor, 0.45 rad") << false << 0.45;
+        QTest::newRow("flat floor, 0.6 rad") << true << 0.6;
+    }
+    void turnedSupportsHoldTheCornerATurnBringsDown() {
+        QFETCH(bool, flatFloor);
+        QFETCH(Real, turn);
+        const Shape box = mustShape(makeBox(Vec3(2.0, 0.5, 2.0)));
+        const Shape plane = mustShape(makeHull(
+            computeConvexHull(std::vector<Vec3>{Vec3(-3, 0, -3), Vec3(3, 0, -3), Vec3(3, 0, 3), Vec3(-3, 0, 3)})));
+        const Shape& floor = flatFloor ? plane : box;
+        const Real top = flatFloor ? 0.0 : 0.5;
+        const Shape disc = discShape();
+        const Transform xd = Transform::fromQuat(Vec3(0.0, top + 0.2, 0.0), axisAngle(Vec3(1, 0, 0), 0.3));
+        Manifold m;
+        QVERIFY(collide(floor, Transform{}, disc, xd, 0.5, m));
+        const Manifold before = m;
+        const Quat q = axisAngle(Vec3(1, 0, 0), -turn);
+        addTurnedSupports(floor, Transform{}, Quat(1, 0, 0, 0), disc, xd, q, m);
+        QVERIFY(manifoldIsConsistent(m, Transform{}, xd));
+        QVERIFY(m.pointCount <= 4);
+        // The corner lowest once turned about the disc's centre, and where it is now.
+        const ConvexPolyhedron& p = *disc.polyhedron;
+        size_t lowest = 0;
+        for (size_t k = 1; k < p.vertices.size(); ++k)
+            if ((q * xd.rotate(p.vertices[k])).y < (q * xd.rotate(p.vertices[lowest])).y)
+                lowest = k;
+        const Vec3 corner = xd.apply(p.vertices[lowest]);
+        bool held = false;
+        for (int k = 0; k < m.pointCount; ++k)
+            if (glm::length(xd.apply(m.points[k].localB) - corner) < 1e-9) {
+                held = true;
+                QVERIFY(std::abs(m.points[k].separation - (corner.y - top)) < 1e-9);
+            }
+        QVERIFY(held);
+        // The nearest point at the start stays.
+        int deepest = 0;
+        for (int k = 1; k < before.pointCount; ++k)
+            if (before.points[k].separation < before.points[deepest].separation)
+                deepest = k;
+        bool kept = false;
+        for (int k = 0; k < m.pointCount; ++k)
+            kept = kept || glm::length(m.points[k].position - before.points[deepest].position) < 1e-12;
+        QVERIFY(kept);
+    }
+
+    // Without a turn, with a turn that brings no corner nearer (about the normal, the disc lying flat), or with the
+    // corner that comes down over nothing (the floor a post under the near rim), the manifold is left as it was;
+    // over a wide floor the same turn adds the corner.
+    void turnedSupportsAddOnlyACornerThatComesDownOnSomething_data() {
+        QTest::addColumn<Real>("tilt");
+        QTest::addColumn<Vec3>("axis");
+        QTest::addColumn<Real>("turn");
+        QTest::addColumn<bool>("post");
+        QTest::addColumn<bool>("added");
+        QTest::newRow("tilted, no turn") << 0.3 << Vec3(1, 0, 0) << 0.0 << false << false;
+        QTest::newRow("flat, turned about the normal") << 0.0 << Vec3(0, 1, 0) << 0.6 << false << false;
+        QTest::newRow("tilted, turned over a post") << 0.3 << Vec3(1, 0, 0) << -0.6 << true << false;
+        QTest::newRow("tilted, turned over a floor") << 0.3 << Vec3(1, 0, 0) << -0.6 << false << true;
+    }
+    void turnedSupportsAddOnlyACornerThatComesDownOnSomething() {
+        QFETCH(Real, tilt);
+        QFETCH(Vec3, axis);
+        QFETCH(Real, turn);
+        QFETCH(bool, post);
+        QFETCH(bool, added);
+        const Shape disc = discShape();
+        // About 2 cm over the floor; tilted about +x, its +z side is the lower, and under it a post 10 cm wide, or a
+        // wide floor.
+        const Transform xd =
+            Transform::fromQuat(Vec3(0.0, 0.57 + 0.4 * std::sin(tilt), 0.0), axisAngle(Vec3(1, 0, 0), tilt));
+        const Shape floor = mustShape(makeBox(post ? Vec3(0.05, 0.5, 0.05) : Vec3(2.0, 0.5, 2.0)));
+        const Transform xf{post ? Vec3(0.0, 0.0, 0.37) : Vec3(0.0), Mat3(1.0)};
+        Manifold m;
+        QVERIFY(collide(floor, xf, disc, xd, 0.05, m)); // the near rim only
+        const Manifold before = m;
+        addTurnedSupports(floor, xf, Quat(1, 0, 0, 0), disc, xd, axisAngle(axis, turn), m);
+        bool same = m.pointCount == before.pointCount;
+        for (int k = 0; k < m.pointCount && same; ++k)
+            same = m.points[k].position == before.points[k].position &&
+                   m.points[k].separation == before.points[k].separation;
+        QCOMPARE(!same, added);
+        QVERIFY(manifoldIsConsistent(m, xf, xd));
     }
 
     void nonFiniteInputGivesNoContact() {

@@ -70,27 +70,28 @@ struct WorldTuning {
     Real refineExtent = 0.1;
     Real refineExtentSubsteps = 6.0;
     // A contact that holds a body up against gravity (normal within 45 degrees of vertical) and lies between a body
-    // nearer the ground and one at least stackHoldRatio times heavier holds the lower body still (shock propagation;
+    // nearer the ground (fewer contacts from it, or as few with the lower centre) and one at least stackHoldRatio
+    // times heavier holds the lower body still (shock propagation;
     // World::heightsAboveSupport(), World::contactHold()). Only the contacts where a heavier body bears on a lighter
     // one hold: bodies of one mass among themselves are solved as before. Until 2026-12-05 this took a ratio of
     // holdMassRatio and an island with a mass ratio above refineMassRatio, and a 0.5 m cube of 20 or 200 kg dropped
     // 5 m onto one of 1 kg on the floor drove it 42 or 185 mm into the floor and came down beside it; one of 5 kg from
     // 5 m or 3 kg from 10 m went through it too. Held from a ratio of 2, every such drop ends with the heavy cube on
     // top and the deepest contact under 0.05 mm (tst_stacking), and piles of 1,000 random boxes (ratios up to 19)
-    // came to rest in 144 of seeds 1-144.
+    // came to rest in 144 of seeds 1-144 (again on 2026-12-05, when bodies at the same height came to be held too).
     //
     // In an island whose mass ratio is above refineMassRatio, where the heavier body (at least holdMassRatio times
-    // the lower one) presses the lower one down into its support less steeply than that, or the two are at
-    // the same height (both on the floor), with the normal at least wedgeRise (the sine of its angle above
-    // horizontal, seen from the lower body), the lower body is not held but made heavier in that contact only, to
-    // 1/holdMassRatio of the upper one (World::contactHold()). A 1,000 kg ball rolled at 10 m/s into a 1 kg box on
-    // the floor wedged the box into the floor: the sweeps passed the ball's momentum down through the box a
-    // thousandth at a time, and the box sank 2.2-4.3 cm at 4, 5, 7, 8, 10 and 12 substeps (1.0 mm at 6, by luck) and
-    // threw the ball up to 1.1-1.4 m. Made heavier, the box sinks at most 1.2 mm at any of those substep counts and
-    // the ball rolls over it (its centre rises 0.20-0.22 m; the box is 0.2 m tall). The price: momentum is not
-    // conserved in that contact; the ball comes out of its first strike at 7.0 m/s instead of 8.5 m/s, as if it had
-    // met a 100 kg box. (Made a tenth as heavy, 1:100, the box still sank 7.3 mm at 8 substeps.) A heavy block slid
-    // flat into a light cube on the floor still sends it off (2.68 m/s instead of 2.76 m/s).
+    // the lower one) presses the lower one down into its support less steeply than that, with the normal at least
+    // wedgeRise (the sine of its angle above horizontal, seen from the lower body), the lower body is not held but
+    // made heavier in that contact only, to 1/holdMassRatio of the upper one (World::contactHold()). A 1,000 kg
+    // ball rolled at 10 m/s into a 1 kg box on the floor wedged the box into the floor: the sweeps passed the ball's
+    // momentum down through the box a thousandth at a time, and the box sank 2.2-4.3 cm at 4, 5, 7, 8, 10 and 12
+    // substeps (1.0 mm at 6, by luck) and threw the ball up to 1.1-1.4 m. Made heavier, the box sinks at most 1.2 mm at
+    // any of those substep counts and the ball rolls over it (its centre rises 0.20-0.22 m; the box is 0.2 m tall). The
+    // price: momentum is not conserved in that contact; the ball comes out of its first strike at 7.0 m/s instead
+    // of 8.5 m/s, as if it had met a 100 kg box. (Made a tenth as heavy, 1:100, the box still sank 7.3 mm at 8
+    // substeps.) A heavy block slid flat into a light cube on the floor still sends it off (2.68 m/s instead of 2.76
+    // m/s).
     Real holdMassRatio = 10.0;
     Real stackHoldRatio = 2.0;
     // A contact supports a body in the heights of shock propagation only if it is at most this much (m) farther
@@ -374,8 +375,8 @@ private:
         Vec3 towardUpper{0.0}; // the normal, from the lower body to the upper one
         Real along = 0.0;      // towardUpper's rise
         bool valid = false;    // both at a height, the upper one above, the normal at least wedgeRise above horizontal
-        bool stopsUpper = false; // and different heights, the normal within 45 degrees of vertical, the upper body
-                                 // stackHoldRatio times heavier: held unless it rises into the upper one
+        bool stopsUpper = false; // and the normal within 45 degrees of vertical, the upper body stackHoldRatio times
+                                 // heavier: held unless it rises into the upper one
     };
     HoldGeometry holdGeometry(uint32_t slot) const;
     // Whether the lower body's surface moves into the upper one faster than WorldTuning::holdRiseSpeed at a point.

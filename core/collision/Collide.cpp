@@ -401,51 +401,6 @@ bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, cons
     return true;
 }
 
-// How far a point outside a shape is from its surface along the unit direction d: the ray's entry distance, or none
-// if the ray misses the shape or starts inside it. A flat polygon is hit within its outline, from either side.
-std::optional<Real> distanceAlong(const Shape& s, const Transform& xf, const Vec3& origin, const Vec3& d) {
-    if (s.kind == ShapeKind::Sphere) {
-        const Vec3 m = origin - xf.position;
-        const Real b = glm::dot(m, d), c = glm::dot(m, m) - s.radius * s.radius;
-        const Real disc = b * b - c;
-        if (!(c > 0.0) || !(b < 0.0) || !(disc >= 0.0))
-            return std::nullopt;
-        return -b - std::sqrt(disc);
-    }
-    const ConvexPolyhedron& p = *s.polyhedron;
-    const Vec3 o = xf.applyInverse(origin), dir = xf.rotateInverse(d);
-    if (p.flat) {
-        const PolyFace& f = p.faces[0];
-        const Real along = glm::dot(f.normal, dir), height = glm::dot(f.normal, o) - f.offset;
-        if (!(std::abs(along) > 1e-12) || !(height * along < 0.0))
-            return std::nullopt;
-        const Real t = -height / along;
-        const Vec3 x = o + t * dir;
-        for (uint32_t k = 0; k < f.count; ++k) {
-            const Vec3& v0 = p.vertices[p.faceVertices[f.first + k]];
-            const Vec3& v1 = p.vertices[p.faceVertices[f.first + (k + 1) % f.count]];
-            if (glm::dot(glm::cross(v1 - v0, x - v0), f.normal) < 0.0)
-                return std::nullopt;
-        }
-        return t;
-    }
-    Real enter = 0.0, exit = std::numeric_limits<Real>::max();
-    bool outside = false;
-    for (const PolyFace& f : p.faces) {
-        const Real along = glm::dot(f.normal, dir), height = glm::dot(f.normal, o) - f.offset;
-        outside = outside || height > 0.0;
-        if (along < 0.0)
-            enter = std::max(enter, -height / along);
-        else if (along > 0.0)
-            exit = std::min(exit, -height / along);
-        else if (height > 0.0)
-            return std::nullopt;
-    }
-    if (!outside || !(enter <= exit))
-        return std::nullopt;
-    return enter;
-}
-
 } // namespace
 
 int reduceContactPoints(const Vec3* p, const Real* sep, int count, const Vec3& normal, int chosen[4]) {
@@ -584,6 +539,49 @@ bool collide(const Shape& a, const Transform& xfA, const Shape& b, const Transfo
         return true;
     }
     return collidePolyhedra(a, xfA, b, xfB, spec, out, options);
+}
+
+std::optional<Real> distanceAlong(const Shape& s, const Transform& xf, const Vec3& origin, const Vec3& d) {
+    if (s.kind == ShapeKind::Sphere) {
+        const Vec3 m = origin - xf.position;
+        const Real b = glm::dot(m, d), c = glm::dot(m, m) - s.radius * s.radius;
+        const Real disc = b * b - c;
+        if (!(c > 0.0) || !(b < 0.0) || !(disc >= 0.0))
+            return std::nullopt;
+        return -b - std::sqrt(disc);
+    }
+    const ConvexPolyhedron& p = *s.polyhedron;
+    const Vec3 o = xf.applyInverse(origin), dir = xf.rotateInverse(d);
+    if (p.flat) {
+        const PolyFace& f = p.faces[0];
+        const Real along = glm::dot(f.normal, dir), height = glm::dot(f.normal, o) - f.offset;
+        if (!(std::abs(along) > 1e-12) || !(height * along < 0.0))
+            return std::nullopt;
+        const Real t = -height / along;
+        const Vec3 x = o + t * dir;
+        for (uint32_t k = 0; k < f.count; ++k) {
+            const Vec3& v0 = p.vertices[p.faceVertices[f.first + k]];
+            const Vec3& v1 = p.vertices[p.faceVertices[f.first + (k + 1) % f.count]];
+            if (glm::dot(glm::cross(v1 - v0, x - v0), f.normal) < 0.0)
+                return std::nullopt;
+        }
+        return t;
+    }
+    Real enter = 0.0, exit = std::numeric_limits<Real>::max();
+    bool outside = false;
+    for (const PolyFace& f : p.faces) {
+        const Real along = glm::dot(f.normal, dir), height = glm::dot(f.normal, o) - f.offset;
+        outside = outside || height > 0.0;
+        if (along < 0.0)
+            enter = std::max(enter, -height / along);
+        else if (along > 0.0)
+            exit = std::min(exit, -height / along);
+        else if (height > 0.0)
+            return std::nullopt;
+    }
+    if (!outside || !(enter <= exit))
+        return std::nullopt;
+    return enter;
 }
 
 void addTurnedSupports(const Shape& a, const Transform& xfA, const Quat& turnA, const Shape& b, const Transform& xfB,

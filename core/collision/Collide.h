@@ -6,6 +6,8 @@
 #include "collision/Manifold.h"
 #include "collision/Shape.h"
 
+#include <optional>
+
 namespace rl {
 
 // How polyhedron pairs (boxes and hulls) find their contact normal and features. Both are exact. The SAT's edge
@@ -42,6 +44,10 @@ struct CollideOptions {
 // speculativeDistance: the world keeps it and tests it first next step (see World::collidePair()).
 bool collide(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, Real speculativeDistance,
              Manifold& out, const CollideOptions& options = {});
+
+// How far a point outside a shape is from its surface along the unit direction d: the ray's entry distance, or none
+// if the ray misses the shape or starts inside it. A flat polygon is hit within its outline, from either side.
+std::optional<Real> distanceAlong(const Shape& s, const Transform& xf, const Vec3& origin, const Vec3& d);
 
 // Points for the corners a turning body brings into contact within the step. A manifold holds the features nearest at
 // the step's start; a hull turning fast (a tumbling cone's rim, of which the reduction keeps four corners; a cylinder

@@ -15,6 +15,7 @@ constexpr std::string_view kStageNames[kStageCount] = {"update_broadphase",
                                                        "relax",
                                                        "restitution",
                                                        "store_impulses",
+                                                       "push_out",
                                                        "ccd",
                                                        "sleep",
                                                        "store_frame"};
@@ -22,7 +23,8 @@ constexpr std::string_view kCounterNames[kCounterCount] = {
     "pairs",           "pairs_tested",     "manifolds",     "contact_points",     "normal_rows",
     "friction_rows",   "restitution_rows", "swept_batches", "awake_bodies",       "integrated_bodies",
     "ccd_bodies",      "ccd_hits",         "steps",         "islands_shared_out", "islands_cut",
-    "solved_in_parts", "part_imbalance",   "steps_alone",   "team_steps",         "islands_in_body_order"};
+    "solved_in_parts", "part_imbalance",   "steps_alone",   "team_steps",         "islands_in_body_order",
+    "pushed_contacts"};
 } // namespace
 
 std::string_view stageName(Stage stage) {

@@ -23,6 +23,7 @@ enum class Stage {
     Relax,
     Restitution,
     StoreImpulses, // velocities, positions and accumulated impulses back to the bodies and manifolds
+    PushOut,       // bodies the step took into anchors and sleepers moved out (World::pushOutOfContacts())
     Ccd,
     Sleep,
     StoreFrame,
@@ -53,6 +54,7 @@ enum class Counter {
     StepsAlone,         // steps a world with a team took on one thread, the team not paying (TeamPacer)
     TeamSteps,          // steps in which a world's team of threads ran at least one job together (ThreadTeam::run())
     IslandsInBodyOrder, // of IslandsSharedOut, the solves whose islands went to the members in runs of body order
+    PushedContacts,     // contacts whose points World::pushOutOfContacts() moved a body out of
     Count
 };
 inline constexpr int kCounterCount = static_cast<int>(Counter::Count);

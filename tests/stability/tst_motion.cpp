@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string_view>
 
 using namespace rl;
@@ -33,6 +34,17 @@ void addSpeedRows() {
     QTest::newRow("100 m/s") << 100.0;
     QTest::newRow("300 m/s") << 300.0;
 }
+// Steps w for `frames` and returns the lowest height body 1's hull points (shape coordinates) reached.
+Real lowestPointOver(World& w, const std::vector<Vec3>& points, int frames, RunStats& stats) {
+    Real lowest = std::numeric_limits<Real>::max();
+    stats = run(w, frames, [&](int) {
+        const Transform pose = w.transform(1);
+        for (const Vec3& p : points)
+            lowest = std::min(lowest, pose.apply(p).y);
+    });
+    return lowest;
+}
+
 } // namespace
 
 class TestMotion : public QObject {
@@ -351,7 +363,8 @@ private slots:
     // A cone or a cylinder of 32 sides thrown down tumbling: a corner that is not in its manifold at the step's start
     // comes down within the step (the cone's base lands as a 32-gon, of which the manifold holds four corners; the
     // cylinder turns 0.67 rad a step at 40 rad/s). Before the manifold held the corners that the turn brings down
-    // (addTurnedSupports()), these went in 11.9, 1.8, 52.1 and 52.8 mm; now 0.1, 0.0, 0.0 and 8.3 mm (2026-12-05).
+    // (addTurnedSupports()), these went in 11.9, 1.8, 52.1 and 52.8 mm; then 0.1, 0.0, 0.0 and 8.3 mm, and 7.4 mm for
+    // the last once bodies were pushed out after the sweeps (pushOutOfContacts(); 2026-12-05).
     void tumblingHullLandsOnItsCorners_data() {
         QTest::addColumn<QString>("shape");
         QTest::addColumn<Real>("radius");
@@ -392,16 +405,50 @@ private slots:
         body.velocity = Vec3(1.0, -fall, 0.0);
         body.angularVelocity = spin * Vec3(0.8, 0.0, 0.6);
         World w = makeWorld(scene);
-        Real lowest = 1.0;
-        const RunStats stats = run(w, 120, [&](int) {
-            const Transform pose = w.transform(1);
-            for (const Vec3& p : points)
-                lowest = std::min(lowest, pose.apply(p).y);
-        });
+        RunStats stats;
+        const Real lowest = lowestPointOver(w, points, 120, stats);
         qInfo("%s of %.2f m tumbling at %.0f rad/s, falling at %.0f m/s: lowest corner %.2f mm", qPrintable(shape),
               radius, spin, fall, 1e3 * lowest);
         QVERIFY(stats.allFinite);
         QVERIFY(lowest > -deepest);
+    }
+
+    // A top: a cone of 32 sides (10 cm radius, 30 cm to its tip) spinning about its axis on its tip, the axis 0.3 rad
+    // from vertical. The rows hold their points' velocities at anchors fixed at the step's start; the tip, off the
+    // axis the body turns about while it wobbles, follows an arc while they follow its chord, and it sank about as the
+    // spin squared: 8.7, 34 and 65 mm at 40, 80 and 160 rad/s. Pushed out after the sweeps (pushOutOfContacts()), 2.0,
+    // 3.1 and 2.0 mm (2026-12-05).
+    void spinningTopStaysOnItsTip_data() {
+        QTest::addColumn<Real>("spin");
+        QTest::newRow("40 rad/s") << 40.0;
+        QTest::newRow("80 rad/s") << 80.0;
+        QTest::newRow("160 rad/s") << 160.0;
+    }
+    void spinningTopStaysOnItsTip() {
+        QFETCH(Real, spin);
+        std::vector<Vec3> points;
+        for (int side = 0; side < 32; ++side) {
+            const Real phi = 2.0 * kPi * side / 32.0;
+            points.push_back(Vec3(0.1 * std::cos(phi), 0.1 * std::sin(phi), 0.0));
+        }
+        points.push_back(Vec3(0.0, 0.0, 0.3));
+        Scene scene = scenes::drop(0.5, 0.0);
+        BodyDef& body = scene.bodies[1];
+        body.shape.type = ShapeType::Hull;
+        body.shape.points = points;
+        body.mass = 1.0;
+        // Its +z (base to tip) pointing down, 0.3 rad from vertical, the tip 5 mm over the floor.
+        body.orientation = glm::angleAxis(0.5 * kPi - 0.3, Vec3(1.0, 0.0, 0.0));
+        const Vec3 axis = body.orientation * Vec3(0.0, 0.0, 1.0);
+        body.position = Vec3(0.0, 0.005, 0.0) - 0.3 * axis;
+        body.angularVelocity = spin * axis;
+        World w = makeWorld(scene);
+        RunStats stats;
+        const Real lowest = lowestPointOver(w, points, 180, stats);
+        qInfo("top spinning at %.0f rad/s: lowest point %.2f mm, %lld contacts pushed out", spin, 1e3 * lowest,
+              static_cast<long long>(w.profile().counter(Counter::PushedContacts)));
+        QVERIFY(stats.allFinite);
+        QVERIFY(lowest > -5e-3);
     }
 
     // A sheared box (a hull whose principal axes are not those of its faces) lying on a frictionless floor, spun about

@@ -663,6 +663,40 @@ private slots:
         QVERIFY(manifoldIsConsistent(m, xf, xd));
     }
 
+    // distanceAlong(): from outside a shape along a direction to its surface; none when the ray misses it or starts
+    // inside it. A flat polygon is hit within its outline only.
+    void distanceAlongAShape_data() {
+        QTest::addColumn<QString>("shape");
+        QTest::addColumn<Vec3>("origin");
+        QTest::addColumn<Vec3>("direction");
+        QTest::addColumn<Real>("distance"); // negative: none
+        QTest::newRow("box, from above") << "box" << Vec3(0.3, 0.8, -0.2) << Vec3(0, -1, 0) << 0.3;
+        QTest::newRow("box, slanting in through a side")
+            << "box" << Vec3(-1.0, 0.2, 0.0) << glm::normalize(Vec3(1, -0.1, 0)) << 0.5 * std::sqrt(1.01);
+        QTest::newRow("box, beside it") << "box" << Vec3(0.6, 0.8, 0.0) << Vec3(0, -1, 0) << -1.0;
+        QTest::newRow("box, from inside") << "box" << Vec3(0.1, 0.1, 0.1) << Vec3(0, -1, 0) << -1.0;
+        QTest::newRow("box, pointing away") << "box" << Vec3(0.0, 0.8, 0.0) << Vec3(0, 1, 0) << -1.0;
+        QTest::newRow("plane, from above") << "plane" << Vec3(1.0, 0.4, 1.0) << Vec3(0, -1, 0) << 0.4;
+        QTest::newRow("plane, from below") << "plane" << Vec3(1.0, -0.4, 1.0) << Vec3(0, 1, 0) << 0.4;
+        QTest::newRow("plane, beyond its outline") << "plane" << Vec3(3.5, 0.4, 0.0) << Vec3(0, -1, 0) << -1.0;
+        QTest::newRow("sphere, from above") << "sphere" << Vec3(0.0, 2.0, 0.0) << Vec3(0, -1, 0) << 1.5;
+        QTest::newRow("sphere, beside it") << "sphere" << Vec3(0.6, 2.0, 0.0) << Vec3(0, -1, 0) << -1.0;
+    }
+    void distanceAlongAShape() {
+        QFETCH(QString, shape);
+        QFETCH(Vec3, origin);
+        QFETCH(Vec3, direction);
+        QFETCH(Real, distance);
+        const Shape s = shape == "box"     ? mustShape(makeBox(Vec3(0.5)))
+                        : shape == "plane" ? mustShape(makeHull(computeConvexHull(std::vector<Vec3>{
+                                                 Vec3(-3, 0, -3), Vec3(3, 0, -3), Vec3(3, 0, 3), Vec3(-3, 0, 3)})))
+                                           : mustShape(makeSphere(0.5));
+        const std::optional<Real> t = distanceAlong(s, Transform{}, origin, direction);
+        QCOMPARE(t.has_value(), distance >= 0.0);
+        if (t)
+            QVERIFY(std::abs(*t - distance) < 1e-12);
+    }
+
     void nonFiniteInputGivesNoContact() {
         const Shape cube = mustShape(makeBox(Vec3(0.5)));
         Manifold m;

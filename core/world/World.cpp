@@ -402,10 +402,10 @@ void World::pushOutOfContacts(Real slop) {
             const uint32_t body = movesA ? a : b;
             // A body that ends the step too slow to have moved slop within it is left alone (the sweeps keep a slow
             // body's points where they hold them); this takes most resting contacts out before any transform.
-            if (pass == 0 && !((glm::length(m_state.linearVelocity[body]) +
-                                glm::length(m_state.angularVelocity[body]) * m_radius[body]) /
-                                   m_fps >
-                               slop))
+            const Real travel = (glm::length(m_state.linearVelocity[body]) +
+                                 glm::length(m_state.angularVelocity[body]) * m_radius[body]) /
+                                m_fps;
+            if (pass == 0 && !(travel > slop))
                 continue;
             bool moved = false;
             // The normal turns with A (collidePair()); the still side's transform is that of the step's start.
@@ -1283,8 +1283,8 @@ ContactSolver::Hold World::contactHold(uint32_t slot) const {
     // normal within 45 degrees of vertical, the lower body below) and the upper one is stackHoldRatio times heavier,
     // at different heights or at the same height: a heavy plank landing across a light cube and the floor at once
     // rests on both (its two contacts within supportGap), and while the two were left unheld at the same height the
-    // sweeps took the plank's momentum out through the cube a little at a time and drove it up to 9.8 mm into the
-    // floor (tst_stacking; 0.75 mm held, 2026-12-05). A contact that presses the lower body down from the side (the
+    // sweeps took the plank's momentum out through the cube a little at a time: deepest contact up to 9.8 mm
+    // (tst_stacking; 0.75 mm held, 2026-12-05). A contact that presses the lower body down from the side (the
     // normal at least wedgeRise above horizontal) makes it heavier instead, to 1/holdMassRatio of the upper body (see
     // WorldTuning::holdMassRatio). A heavy body swung flat into a light one on the floor is not stopped by it, however
     // many contacts lie between the light one and the floor.

@@ -70,15 +70,15 @@ struct WorldTuning {
     Real refineExtent = 0.1;
     Real refineExtentSubsteps = 6.0;
     // A contact that holds a body up against gravity (normal within 45 degrees of vertical) and lies between a body
-    // nearer the ground (fewer contacts from it, or as few with the lower centre) and one at least stackHoldRatio
-    // times heavier holds the lower body still (shock propagation;
-    // World::heightsAboveSupport(), World::contactHold()). Only the contacts where a heavier body bears on a lighter
-    // one hold: bodies of one mass among themselves are solved as before. Until 2026-12-05 this took a ratio of
-    // holdMassRatio and an island with a mass ratio above refineMassRatio, and a 0.5 m cube of 20 or 200 kg dropped
-    // 5 m onto one of 1 kg on the floor drove it 42 or 185 mm into the floor and came down beside it; one of 5 kg from
-    // 5 m or 3 kg from 10 m went through it too. Held from a ratio of 2, every such drop ends with the heavy cube on
-    // top and the deepest contact under 0.05 mm (tst_stacking), and piles of 1,000 random boxes (ratios up to 19)
-    // came to rest in 144 of seeds 1-144 (again on 2026-12-05, when bodies at the same height came to be held too).
+    // nearer the ground (fewer contacts from it, or as few with the lower centre) and one at least stackHoldRatio times
+    // heavier holds the lower body still (shock propagation; World::heightsAboveSupport(), World::contactHold()). Only
+    // the contacts where a heavier body bears on a lighter one hold: bodies of one mass among themselves are solved as
+    // before. Until 2026-12-05 this took a ratio of holdMassRatio and an island with a mass ratio above
+    // refineMassRatio, and a 0.5 m cube of 20 or 200 kg dropped 5 m onto one of 1 kg on the floor drove it 42 or 185 mm
+    // into the floor and came down beside it; one of 5 kg from 5 m or 3 kg from 10 m went through it too. Held from a
+    // ratio of 2, every such drop ends with the heavy cube on top and the deepest contact under 0.05 mm (tst_stacking),
+    // and piles of 1,000 random boxes (ratios up to 19) came to rest in 144 of seeds 1-144 (again on 2026-12-05, when
+    // bodies at the same height came to be held too).
     //
     // In an island whose mass ratio is above refineMassRatio, where the heavier body (at least holdMassRatio times
     // the lower one) presses the lower one down into its support less steeply than that, with the normal at least
@@ -90,8 +90,8 @@ struct WorldTuning {
     // any of those substep counts and the ball rolls over it (its centre rises 0.20-0.22 m; the box is 0.2 m tall). The
     // price: momentum is not conserved in that contact; the ball comes out of its first strike at 7.0 m/s instead
     // of 8.5 m/s, as if it had met a 100 kg box. (Made a tenth as heavy, 1:100, the box still sank 7.3 mm at 8
-    // substeps.) A heavy block slid flat into a light cube on the floor still sends it off (2.68 m/s instead of 2.76
-    // m/s).
+    // substeps.) A heavy block slid flat into a light cube on the floor still sends it off (2.68 m/s instead of
+    // 2.76 m/s).
     Real holdMassRatio = 10.0;
     Real stackHoldRatio = 2.0;
     // A contact supports a body in the heights of shock propagation only if it is at most this much (m) farther
@@ -107,7 +107,7 @@ struct WorldTuning {
     // UV sphere, an icosphere from Blender) is a ball to the solver (kBodyRound) in a step in which it turns through
     // more than the angle one face spans seen from that centre; one whose support distances change by at most 1 - this
     // fraction of its radius as it turns about an axis (a cylinder, a cone) is round about that axis in a step in
-    // which it turns about it through more than one face (World::create(), World::solve()).
+    // which it turns about it through more than one face (World::create(), World::updateRoundHulls()).
     Real roundHullRoundness = 0.9;
     Real wedgeRise = 0.2;
     // Sweeps of the relax pass per substep (the solve pass runs `iterations` sweeps). The relax pass removes the

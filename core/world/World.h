@@ -99,7 +99,8 @@ struct WorldTuning {
     Real supportGap = 0.01;
     // After the sweeps, a point of a contact between a moving body and a still one (an anchor, a sleeper) that the step
     // took deeper than this (m) moves the body out to this depth (World::pushOutOfContacts()); negative: never. It
-    // took ramps.obj's first 120 frames 2.0 ms (of the 228 ms of all its stages) and pushed 53 contacts (2026-12-05).
+    // took ramps.obj's first 120 frames 2.9-3.0 ms (of the 226-228 ms of all its stages) and pushed 54 contacts
+    // (2026-12-05).
     Real pushOutSlop = 0.002;
     // A lower body whose surface moves into the upper one faster than this (m/s) is not held (World::contactHold()).
     Real holdRiseSpeed = 3.0;

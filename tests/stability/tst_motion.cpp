@@ -363,7 +363,7 @@ private slots:
     // A cone or a cylinder of 32 sides thrown down tumbling: a corner that is not in its manifold at the step's start
     // comes down within the step (the cone's base lands as a 32-gon, of which the manifold holds four corners; the
     // cylinder turns 0.67 rad a step at 40 rad/s). Before the manifold held the corners that the turn brings down
-    // (addTurnedSupports()), these went in 11.9, 1.8, 52.1 and 52.8 mm; then 0.1, 0.0, 0.0 and 8.3 mm, and 7.4 mm for
+    // (addTurnedSupports()), these went in 11.9, 1.8, 52.1 and 52.8 mm; then 0.1, 0.0, 0.0 and 8.3 mm, and 2.0 mm for
     // the last once bodies were pushed out after the sweeps (pushOutOfContacts(); 2026-12-05).
     void tumblingHullLandsOnItsCorners_data() {
         QTest::addColumn<QString>("shape");
@@ -417,7 +417,7 @@ private slots:
     // from vertical. The rows hold their points' velocities at anchors fixed at the step's start; the tip, off the
     // axis the body turns about while it wobbles, follows an arc while they follow its chord, and it sank about as the
     // spin squared: 8.7, 34 and 65 mm at 40, 80 and 160 rad/s. Pushed out after the sweeps (pushOutOfContacts()), 2.0,
-    // 3.1 and 2.0 mm (2026-12-05).
+    // 2.3 and 2.0 mm (2026-12-05).
     void spinningTopStaysOnItsTip_data() {
         QTest::addColumn<Real>("spin");
         QTest::newRow("40 rad/s") << 40.0;

@@ -589,7 +589,7 @@ void addTurnedSupports(const Shape& a, const Transform& xfA, const Quat& turnA, 
     if (m.pointCount == 0)
         return;
     const Vec3 n = m.normal;
-    const Quat none(1.0, 0.0, 0.0, 0.0);
+    const Quat none = identityQuat();
     const bool turnsA = a.polyhedron && turnA != none, turnsB = b.polyhedron && turnB != none;
     if (!turnsA && !turnsB)
         return;

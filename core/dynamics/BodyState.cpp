@@ -216,16 +216,14 @@ Quat BodyState::anchorTurnQuat(uint32_t i, const Quat& turn, const Quat& startOr
         return turn;
     const Vec3& rollAxis = info[i].rollAxis;
     if (rollAxis == Vec3(0.0))
-        return Quat(1.0, 0.0, 0.0, 0.0);
+        return identityQuat();
     return withoutTwist(turn, startOrientation * rollAxis); // the axis as it was at the step's start
 }
 
 Mat3 BodyState::anchorTurn(uint32_t i, const Quat& startOrientation) const {
-    const Quat turn = glm::normalize(orientation[i] * glm::conjugate(startOrientation));
-    if (!isRound(i))
-        return glm::mat3_cast(turn);
-    if (info[i].rollAxis == Vec3(0.0))
+    if (isRound(i) && info[i].rollAxis == Vec3(0.0))
         return Mat3(1.0);
+    const Quat turn = glm::normalize(orientation[i] * glm::conjugate(startOrientation));
     return glm::mat3_cast(anchorTurnQuat(i, turn, startOrientation));
 }
 

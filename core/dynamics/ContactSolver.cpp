@@ -1,6 +1,7 @@
 #include "dynamics/ContactSolver.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -474,6 +475,11 @@ void ContactSolver::prepare(std::span<Manifold* const> manifolds, std::span<cons
     scheduleLevels(bodies.size(), bodyPart, solverIndexA, solverIndexB, packParts, parallelFor);
     const SetUpInputs inputs{manifolds, solverIndexA, solverIndexB, friction, restitution, bodies, centers, held};
     buildBatches(inputs, parallelFor);
+    if (m_bounceOnly || (m_kept && settings.restitution)) {
+        m_startVelocity.resize(bodies.size());
+        for (size_t i = 0; i < bodies.size(); ++i)
+            m_startVelocity[i] = {bodies[i].v, bodies[i].w};
+    }
     m_sweepRows = {};
     for (size_t i = 0; i < m_count; ++i)
         if (settings.friction && friction[i] > 0.0)
@@ -940,6 +946,8 @@ void ContactSolver::buildBatches(BatchStore<W>& store, const SetUpInputs& inputs
 bool ContactSolver::mayBounce(const ContactConstraint& c) const {
     if (c.restitution == 0.0)
         return false;
+    if (c.bodyA != 0 && c.bodyB != 0)
+        return true;
     for (int k = 0; k < c.pointCount; ++k)
         if (!(c.points[k].relativeVelocity > -m_settings.restitutionThreshold))
             return true;
@@ -1248,69 +1256,209 @@ void ContactSolver::countSweep() {
     m_counters.sweptBatches += m_sweepRows.sweptBatches;
 }
 
+namespace {
+
+// The points of c that approached faster than the threshold and pushed back in the sweeps (bit k for point k).
+uint8_t struckPoints(const ContactConstraint& c, Real threshold) {
+    uint8_t points = 0;
+    for (int k = 0; k < c.pointCount; ++k)
+        if (!(c.points[k].relativeVelocity > -threshold) && c.points[k].maxNormalImpulse != 0.0)
+            points = static_cast<uint8_t>(points | 1u << k);
+    return points;
+}
+
+// The kinetic energy of body b moving at v and turning at w (its inverse inertia is in world axes).
+Real kineticEnergy(const SolverBody& b, const Vec3& v, const Vec3& w) {
+    if (!(b.invMass > 0.0))
+        return 0.0;
+    Real e = 0.5 * glm::dot(v, v) / b.invMass;
+    if (w != Vec3(0.0) && glm::determinant(b.invInertia) > 0.0)
+        e += 0.5 * glm::dot(w, glm::inverse(b.invInertia) * w);
+    return e;
+}
+
+// The normal row's effective mass of point p with the inverses ia and ib (as setUpConstraint() works it out,
+// unrounded).
+Real ownNormalMass(const Inverse& ia, const Inverse& ib, const ContactConstraint::Point& p, const Vec3& n) {
+    const Vec3 angularA = angularOf(p.rA, n), angularB = angularOf(p.rB, n);
+    const Real k =
+        ia.mass + ib.mass + glm::dot(angularA, ia.inertia * angularA) + glm::dot(angularB, ib.inertia * angularB);
+    return k > 0.0 ? 1.0 / k : 0.0;
+}
+
+// A chain's collisions one after the other take at most this many blows on one record: with e < 1 each blow passes
+// on less than it got and the threshold ends the chain; a row of e = 1 takes one blow a record.
+constexpr uint16_t kChainBlowsPerRecord = 16;
+constexpr uint32_t kNoRecord = 0xffffffffu;
+// Sweeps of the launches of a chain's points, together (alternately forwards and backwards, so that a row's ends
+// hear of each other in a sweep or two).
+constexpr int kChainPasses = 64;
+
+} // namespace
+
 void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
     if (!m_settings.restitution)
         return;
     syncFromBatches();
-    const Real h = m_h;
-    // Only the constraints that may bounce have records (unless all are kept): the others have nothing to do here.
+    // The constraints with records (restitution, and two moving bodies or a fast approach: mayBounce()) and the
+    // struck ones among them. A constraint that holds a side (ContactConstraint::scaleA, scaleB) makes a light body
+    // heavier or still for the sweeps' sake, which is no mass to work a chain's collisions out with: it bounces by the
+    // rule for a manifold alone (with the bodies' own masses, bounceAlone()) and takes no part in chains. (In a chain,
+    // a 0.128 kg box held under a falling 463 kg cube hit it from below as an immovable body and threw it up at 6.6
+    // m/s, 2026-12-05.)
+    thread_local std::vector<uint32_t> records, struck, chained, touches;
+    records.clear();
+    struck.clear();
+    chained.clear();
     for (size_t i = 0; i < m_constraints.size(); ++i) {
-        if (!hasRecord(i))
+        if (!hasRecord(i) || !mayBounce(m_constraints[i])) // the same records whether or not all are kept
             continue;
-        ContactConstraint& c = m_constraints[i];
-        if (c.restitution == 0.0)
+        const ContactConstraint& c = m_constraints[i];
+        const bool held = c.scaleA != 1.0 || c.scaleB != 1.0;
+        if (!held)
+            records.push_back(static_cast<uint32_t>(i));
+        if (struckPoints(c, m_settings.restitutionThreshold) != 0)
+            struck.push_back(static_cast<uint32_t>(i));
+    }
+    if (struck.empty())
+        return;
+    // A struck manifold none of whose moving bodies has another record bounces alone; the rest are links of chains.
+    touches.assign(bodies.size(), 0);
+    for (const uint32_t i : records)
+        for (const uint32_t body : {m_constraints[i].bodyA, m_constraints[i].bodyB})
+            if (body != 0)
+                ++touches[body];
+    const bool chains = m_startVelocity.size() == bodies.size(); // the bodies given to prepare()
+    for (const uint32_t i : struck) {
+        const ContactConstraint& c = m_constraints[i];
+        const bool held = c.scaleA != 1.0 || c.scaleB != 1.0;
+        if (chains && !held && ((c.bodyA != 0 && touches[c.bodyA] > 1) || (c.bodyB != 0 && touches[c.bodyB] > 1)))
+            chained.push_back(i);
+        else
+            bounceAlone(bodies, i);
+    }
+    if (!chained.empty())
+        bounceChains(bodies, records, chained);
+}
+
+ContactSolver::Launch ContactSolver::launchOf(std::span<const SolverBody> bodies, uint32_t constraint, uint8_t points,
+                                              const Real atSurface[4], bool sweepsFloor) const {
+    const ContactConstraint& c = m_constraints[constraint];
+    const SolverBody& a = bodies[c.bodyA];
+    const SolverBody& b = bodies[c.bodyB];
+    const Real offset = m_settings.flightOffset * c.approachAcceleration * m_h;
+    Launch l;
+    l.constraint = constraint;
+    l.points = points;
+    Real apart[4] = {0.0, 0.0, 0.0, 0.0};
+    bool touched = false; // a point that pushed is touching at the step end
+    for (int k = 0; k < c.pointCount; ++k) {
+        const ContactConstraint::Point& p = c.points[k];
+        const Vec3 d = (b.dp - a.dp) + (b.dR * p.rB - a.dR * p.rA);
+        apart[k] = glm::dot(c.normal, d) + p.baseSeparation;
+        touched = touched || (p.maxNormalImpulse != 0.0 && !(apart[k] > 0.0));
+        if ((points >> k & 1u) != 0)
+            l.target[k] = atSurface[k] - offset;
+    }
+    // A manifold can push back with none of its points touching at the step end: the relax sweep's speculative
+    // rows slow what would close the gap in the next substep. Its bounce is launched from where it is, each point
+    // with the speed that a bounce off the surface has on its way back up to that separation (energy again, as
+    // for the impact in prepare()). Launched at the surface's speed from a few millimetres up, a ball dropped
+    // from 1 m reached a second apex 6.6 % above e^4 h0, and one from 1.25 m a third 15 % above e^6 h0
+    // (2026-12-05). A point is never launched slower than the sweeps left it: a corner far from the surface then
+    // gave back the impulse that kept it off, and ramps.obj's deepest contact in its first 2 s went from 49.6 to
+    // 60.1 mm (36.5 mm now). Where a point that pushed touches, the manifold landed within the step and bounces
+    // as before.
+    for (int k = 0; k < c.pointCount && !touched; ++k) {
+        if ((points >> k & 1u) == 0 || atSurface[k] < 0.0)
             continue;
-        SolverBody& a = bodies[c.bodyA];
-        SolverBody& b = bodies[c.bodyB];
-        const Inverse ia = inverseOf(a, c.scaleA), ib = inverseOf(b, c.scaleB);
-        // The points of one manifold are coupled through the bodies' rotation: one pass, point after point, leaves
-        // the first point's impulse lopsided and spins a box that landed flat (a 0.2 m cube dropped face down on
-        // its four corners left at 15 rad/s). So the manifold's bouncing points are iterated together until the
-        // impulses settle, which for a symmetric landing gives the symmetric answer.
-        bool bouncing[4] = {false, false, false, false};
-        Real target[4] = {0.0, 0.0, 0.0, 0.0}, apart[4] = {0.0, 0.0, 0.0, 0.0};
-        int count = 0;
-        bool touched = false; // a point that pushed is touching at the step end
-        for (int k = 0; k < c.pointCount; ++k) {
-            const ContactConstraint::Point& p = c.points[k];
-            const Vec3 d = (b.dp - a.dp) + (b.dR * p.rB - a.dR * p.rA);
-            apart[k] = glm::dot(c.normal, d) + p.baseSeparation;
-            touched = touched || (p.maxNormalImpulse != 0.0 && !(apart[k] > 0.0));
-            // Only points that approached fast and actually pushed back bounce.
-            if (p.relativeVelocity > -m_settings.restitutionThreshold || p.maxNormalImpulse == 0.0)
-                continue;
-            bouncing[k] = true;
-            target[k] = -c.restitution * p.relativeVelocity - m_settings.flightOffset * c.approachAcceleration * h;
-            ++count;
+        const Real speed =
+            std::sqrt(std::max(atSurface[k] * atSurface[k] + 2.0 * c.approachAcceleration * apart[k], 0.0));
+        l.target[k] = sweepsFloor ? std::max(speed - offset, rowVelocity(a, b, c.points[k], c.normal)) : speed - offset;
+    }
+    return l;
+}
+
+void ContactSolver::launch(std::span<SolverBody> bodies, std::span<const Launch> launches, int passes) {
+    // Per point, each row's restitution takes the point's own approach speed: the points of a body that lands
+    // turning approach at different speeds, and leaving each at e times its own can take more energy out of the
+    // sweeps than came in. A 79 kg cone landing on its rim at 52 rad/s with e = 0.9 left with 945 J more than it
+    // brought (2026-12-05). So the launch is bounded by the energy the bodies could have had at impact.
+    const bool bounded = m_settings.step > 0.0 && m_startVelocity.size() == bodies.size();
+    thread_local std::vector<uint32_t> ids;
+    thread_local std::vector<std::pair<Vec3, Vec3>> before;
+    thread_local std::vector<std::array<Real, 4>> impulseBefore;
+    Real bound = 0.0;
+    if (bounded) {
+        ids.clear();
+        for (const Launch& l : launches)
+            for (const uint32_t body : {m_constraints[l.constraint].bodyA, m_constraints[l.constraint].bodyB})
+                if (body != 0)
+                    ids.push_back(body);
+        std::sort(ids.begin(), ids.end());
+        ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+        before.resize(ids.size());
+        const Real flight = m_settings.step + m_h;
+        for (size_t k = 0; k < ids.size(); ++k) {
+            const SolverBody& b = bodies[ids[k]];
+            before[k] = {b.v, b.w};
+            const auto [v0, w0] = m_startVelocity[ids[k]];
+            const Vec3 g = b.invMass > 0.0 ? m_settings.gravity : Vec3(0.0);
+            bound += std::max(kineticEnergy(b, v0, w0), kineticEnergy(b, v0 + g * flight, w0));
         }
-        // A manifold can push back with none of its points touching at the step end: the relax sweep's speculative
-        // rows slow what would close the gap in the next substep. Its bounce is launched from where it is, each point
-        // with the speed that a bounce off the surface has on its way back up to that separation (energy again, as
-        // for the impact in prepare()). Launched at the surface's speed from a few millimetres up, a ball dropped
-        // from 1 m reached a second apex 6.6 % above e^4 h0, and one from 1.25 m a third 15 % above e^6 h0
-        // (2026-12-05). A point is never launched slower than the sweeps left it: a corner far from the surface then
-        // gave back the impulse that kept it off, and ramps.obj's deepest contact in its first 2 s went from 49.6 to
-        // 60.1 mm (36.5 mm now). Where a point that pushed touches, the manifold landed within the step and bounces
-        // as before.
-        for (int k = 0; k < c.pointCount && !touched; ++k) {
-            if (!bouncing[k])
-                continue;
-            const ContactConstraint::Point& p = c.points[k];
-            const Real atSurface = -c.restitution * p.relativeVelocity;
-            const Real speed =
-                std::sqrt(std::max(atSurface * atSurface + 2.0 * c.approachAcceleration * apart[k], 0.0));
-            target[k] =
-                std::max(speed - m_settings.flightOffset * c.approachAcceleration * h, rowVelocity(a, b, p, c.normal));
+        impulseBefore.resize(launches.size());
+        for (size_t l = 0; l < launches.size(); ++l)
+            for (size_t k = 0; k < 4; ++k)
+                impulseBefore[l][k] = m_constraints[launches[l].constraint].points[k].normalImpulse;
+    }
+    sweepLaunches(bodies, launches, passes);
+    if (!bounded)
+        return;
+    // Kinetic energy along the launch's change d from the velocities before it: E(s) = e0 + e1 s + e2 s^2.
+    Real e0 = 0.0, e1 = 0.0, e2 = 0.0;
+    for (size_t k = 0; k < ids.size(); ++k) {
+        const SolverBody& b = bodies[ids[k]];
+        const auto [v, w] = before[k];
+        e0 += kineticEnergy(b, v, w);
+        e2 += kineticEnergy(b, b.v - v, b.w - w);
+        e1 += kineticEnergy(b, b.v, b.w) - kineticEnergy(b, v, w) - kineticEnergy(b, b.v - v, b.w - w);
+    }
+    if (e0 + e1 + e2 <= bound)
+        return;
+    Real s = 0.0;
+    if (e0 < bound && e2 > 0.0)
+        s = std::clamp((-e1 + std::sqrt(std::max(e1 * e1 - 4.0 * e2 * (e0 - bound), 0.0))) / (2.0 * e2), 0.0, 1.0);
+    ++m_counters.boundedBounces;
+    for (size_t k = 0; k < ids.size(); ++k) {
+        SolverBody& b = bodies[ids[k]];
+        const auto [v, w] = before[k];
+        b.v = v + s * (b.v - v);
+        b.w = w + s * (b.w - w);
+    }
+    for (size_t l = 0; l < launches.size(); ++l)
+        for (size_t k = 0; k < 4; ++k) {
+            Real& impulse = m_constraints[launches[l].constraint].points[k].normalImpulse;
+            impulse = impulseBefore[l][k] + s * (impulse - impulseBefore[l][k]);
         }
-        const int passes = count == 1 ? 1 : kRestitutionPasses;
-        for (int pass = 0; count > 0 && pass < passes; ++pass) {
-            Real largest = 0.0, total = 0.0;
+}
+
+void ContactSolver::sweepLaunches(std::span<SolverBody> bodies, std::span<const Launch> launches, int passes) {
+    for (int pass = 0; pass < passes; ++pass) {
+        Real largest = 0.0, total = 0.0;
+        for (size_t n = 0; n < launches.size(); ++n) {
+            const Launch& l = launches[pass % 2 == 0 ? n : launches.size() - 1 - n];
+            ContactConstraint& c = m_constraints[l.constraint];
+            SolverBody& a = bodies[c.bodyA];
+            SolverBody& b = bodies[c.bodyB];
+            const Inverse ia = inverseOf(a, l.bodiesOwnMasses ? 1.0 : c.scaleA);
+            const Inverse ib = inverseOf(b, l.bodiesOwnMasses ? 1.0 : c.scaleB);
             for (int k = 0; k < c.pointCount; ++k) {
-                if (!bouncing[k])
+                if ((l.points >> k & 1u) == 0)
                     continue;
                 ContactConstraint::Point& p = c.points[k];
                 const Real vn = rowVelocity(a, b, p, c.normal);
-                Real impulse = -p.normalMass * (vn - target[k]);
+                const Real mass = l.bodiesOwnMasses ? ownNormalMass(ia, ib, p, c.normal) : p.normalMass;
+                Real impulse = -mass * (vn - l.target[k]);
                 const Real newImpulse = std::max(p.normalImpulse + impulse, 0.0);
                 impulse = newImpulse - p.normalImpulse;
                 p.normalImpulse = newImpulse;
@@ -1320,9 +1468,239 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
                 largest = std::max(largest, std::abs(impulse));
                 total += newImpulse;
             }
+        }
+        if (largest <= kRestitutionTolerance * total)
+            break;
+    }
+}
+
+void ContactSolver::bounceAlone(std::span<SolverBody> bodies, uint32_t constraint) {
+    // The points of one manifold are coupled through the bodies' rotation: one pass, point after point, leaves the
+    // first point's impulse lopsided and spins a box that landed flat (a 0.2 m cube dropped face down on its four
+    // corners left at 15 rad/s). So the manifold's bouncing points are swept together until the impulses settle,
+    // which for a symmetric landing gives the symmetric answer.
+    const ContactConstraint& c = m_constraints[constraint];
+    const uint8_t points = struckPoints(c, m_settings.restitutionThreshold);
+    Real atSurface[4] = {0.0, 0.0, 0.0, 0.0};
+    for (int k = 0; k < c.pointCount; ++k)
+        atSurface[k] = -c.restitution * c.points[k].relativeVelocity;
+    Launch l = launchOf(bodies, constraint, points, atSurface, true);
+    // A held side (ContactConstraint::scaleA, scaleB) is still or heavier for the sweeps' sake: a stack's light body
+    // under a heavy one stands for the ground. Bounced off as such, a heavy body took the held body's own motion as
+    // the ground's: a 536 kg cylinder falling at 6.9 m/s onto a 3 kg cone spinning at 52 rad/s (its surface rising at
+    // 2.8 m/s there) left at 8.4 m/s, and a random scene of bouncing shapes gained 31 % of its energy (2026-12-05).
+    // A bounce is a collision, so it takes the bodies' own masses.
+    l.bodiesOwnMasses = c.scaleA != 1.0 || c.scaleB != 1.0;
+    launch(bodies, std::span<const Launch>(&l, 1), std::popcount(points) == 1 ? 1 : kRestitutionPasses);
+}
+
+void ContactSolver::bounceChains(std::span<SolverBody> bodies, std::span<const uint32_t> records,
+                                 std::span<const uint32_t> struck) {
+    // A chain's collisions are played out one after the other on copies of the bodies at their velocities of the
+    // step start (Guendelman, Bridson and Fedkiw 2003, "Nonconvex rigid bodies with stacking", do the same with the
+    // positions too): a struck manifold takes its blow (its points leave at -e times their approach speed, swept
+    // together as in bounceAlone()), the other records of its bodies are looked at again, and any of their points
+    // that now approaches faster than the threshold takes its own blow, and so on. Points that did not push back in
+    // the sweeps take none. Each point that took a blow is then launched at the normal speed the collisions left it
+    // (a slow approach the threshold let through stays one, for the next step's sweeps), and those launches are swept
+    // together from the sweeps' velocities. A ball rolled into a row of touching balls so leaves the ball at the far
+    // end moving, the others still; by the rule for a manifold alone the row took the blow as one lump, and five
+    // balls with e = 1 kept 48 % of the energy.
+    //
+    // The blows go through one queue, first in first out, seeded in constraint order: records that share no moving
+    // body never meet, so each island's blows come in the same order whichever other islands share this solver (a
+    // team's members solve different sets). The launches are swept chain by chain (the records that took blows,
+    // joined through their moving bodies) for the same reason. Only the records a blow reaches are looked at: in a
+    // bouncing pile of 1,000 boxes, finding every chain's whole extent first took the restitution stage from 4.5 to
+    // 43 ms over 240 steps (2026-12-05).
+    const size_t n = bodies.size();
+    thread_local std::vector<uint32_t> first, adjacent, queue, hitOnce, rattled, owner, root;
+    thread_local std::vector<uint8_t> seen, queued, modelled;
+    thread_local std::vector<uint16_t> blowsTaken;
+    thread_local std::vector<SolverBody> model;
+    thread_local std::vector<std::array<Real, 4>> given, shift, solved;
+    thread_local std::vector<Launch> launches;
+    // Each moving body's records.
+    first.assign(n + 1, 0);
+    for (const uint32_t i : records)
+        for (const uint32_t body : {m_constraints[i].bodyA, m_constraints[i].bodyB})
+            if (body != 0)
+                ++first[body + 1];
+    for (size_t k = 1; k <= n; ++k)
+        first[k] += first[k - 1];
+    adjacent.resize(first[n]);
+    {
+        thread_local std::vector<uint32_t> fill;
+        fill.assign(first.begin(), first.end() - 1);
+        for (const uint32_t i : records)
+            for (const uint32_t body : {m_constraints[i].bodyA, m_constraints[i].bodyB})
+                if (body != 0)
+                    adjacent[fill[body]++] = i;
+    }
+    model.resize(n);
+    model[0] = bodies[0];
+    modelled.assign(n, 0);
+    const size_t count = m_constraints.size();
+    given.resize(count);
+    shift.resize(count);
+    seen.assign(count, 0);
+    queued.assign(count, 0);
+    blowsTaken.assign(count, 0);
+    // A record the blows reach: its bodies' copies at their velocities of the step start, and each point's approach
+    // speed at impact (prepare()) less its normal speed at the step start, what gravity adds on the way to the
+    // surface, kept through the blows.
+    const auto reach = [&](uint32_t i) {
+        if (seen[i] != 0)
+            return;
+        seen[i] = 1;
+        const ContactConstraint& c = m_constraints[i];
+        for (const uint32_t body : {c.bodyA, c.bodyB})
+            if (body != 0 && modelled[body] == 0) {
+                modelled[body] = 1;
+                model[body] = bodies[body];
+                model[body].v = m_startVelocity[body].first;
+                model[body].w = m_startVelocity[body].second;
+            }
+        given[i] = {0.0, 0.0, 0.0, 0.0};
+        // (From the velocities of the step start, not the copies': a blow may have reached them already.)
+        const auto [vA, wA] = c.bodyA != 0 ? m_startVelocity[c.bodyA] : std::pair<Vec3, Vec3>{};
+        const auto [vB, wB] = c.bodyB != 0 ? m_startVelocity[c.bodyB] : std::pair<Vec3, Vec3>{};
+        for (int k = 0; k < c.pointCount; ++k) {
+            const ContactConstraint::Point& p = c.points[k];
+            const Real atStart = glm::dot(c.normal, vB - vA) + glm::dot(wB, angularOf(p.rB, c.normal)) -
+                                 glm::dot(wA, angularOf(p.rA, c.normal));
+            shift[i][static_cast<size_t>(k)] = p.relativeVelocity - atStart;
+        }
+    };
+    queue.assign(struck.begin(), struck.end());
+    for (const uint32_t i : struck) {
+        reach(i);
+        queued[i] = 1;
+    }
+    hitOnce.clear();
+    rattled.clear();
+    for (size_t head = 0; head < queue.size(); ++head) {
+        const uint32_t i = queue[head];
+        queued[i] = 0;
+        const ContactConstraint& c = m_constraints[i];
+        SolverBody& a = model[c.bodyA];
+        SolverBody& b = model[c.bodyB];
+        const std::array<Real, 4>& dv = shift[i];
+        uint8_t hit = 0;
+        Real target[4] = {0.0, 0.0, 0.0, 0.0};
+        for (int k = 0; k < c.pointCount; ++k) {
+            const ContactConstraint::Point& p = c.points[k];
+            const Real vn = rowVelocity(a, b, p, c.normal) + dv[static_cast<size_t>(k)];
+            if (p.maxNormalImpulse == 0.0 || vn > -m_settings.restitutionThreshold)
+                continue;
+            hit = static_cast<uint8_t>(hit | 1u << k);
+            target[k] = -c.restitution * vn;
+        }
+        if (hit == 0)
+            continue;
+        if (blowsTaken[i] == kChainBlowsPerRecord) {
+            rattled.push_back(i); // still struck after as many blows: see below
+            continue;
+        }
+        if (blowsTaken[i]++ == 0)
+            hitOnce.push_back(i);
+        const Inverse ia = inverseOf(a, 1.0), ib = inverseOf(b, 1.0);
+        Real taken[4] = {0.0, 0.0, 0.0, 0.0};
+        const int passes = std::popcount(hit) == 1 ? 1 : kRestitutionPasses;
+        for (int pass = 0; pass < passes; ++pass) {
+            Real largest = 0.0, total = 0.0;
+            for (int k = 0; k < c.pointCount; ++k) {
+                if ((hit >> k & 1u) == 0)
+                    continue;
+                const ContactConstraint::Point& p = c.points[k];
+                const Real vn = rowVelocity(a, b, p, c.normal) + dv[static_cast<size_t>(k)];
+                const Real now = std::max(taken[k] - p.normalMass * (vn - target[k]), 0.0);
+                const Real impulse = now - taken[k];
+                taken[k] = now;
+                applyRow(a, b, ia, ib, p, c.normal, impulse);
+                ++m_counters.restitutionRows;
+                largest = std::max(largest, std::abs(impulse));
+                total += now;
+            }
             if (largest <= kRestitutionTolerance * total)
                 break;
         }
+        for (int k = 0; k < c.pointCount; ++k)
+            given[i][static_cast<size_t>(k)] += taken[k];
+        for (const uint32_t body : {c.bodyA, c.bodyB})
+            if (body != 0)
+                for (uint32_t e = first[body]; e < first[body + 1]; ++e)
+                    if (const uint32_t j = adjacent[e]; j != i && queued[j] == 0) {
+                        reach(j);
+                        queued[j] = 1;
+                        queue.push_back(j);
+                    }
+    }
+    // The chains: the records that took blows, joined through their moving bodies (union-find on the records, each
+    // body remembering the first record that took a blow through it).
+    std::sort(hitOnce.begin(), hitOnce.end());
+    root.resize(count);
+    for (const uint32_t i : hitOnce)
+        root[i] = i;
+    const auto find = [&](uint32_t i) {
+        while (root[i] != i)
+            i = root[i] = root[root[i]];
+        return i;
+    };
+    owner.assign(n, kNoRecord);
+    for (const uint32_t i : hitOnce)
+        for (const uint32_t body : {m_constraints[i].bodyA, m_constraints[i].bodyB}) {
+            if (body == 0)
+                continue;
+            if (owner[body] == kNoRecord) {
+                owner[body] = i;
+                continue;
+            }
+            const uint32_t x = find(i), y = find(owner[body]);
+            root[std::max(x, y)] = std::min(x, y); // the chain's root is its first record
+        }
+    // A chain still struck after kChainBlowsPerRecord blows on one record (a light body rattling between two heavy
+    // ones, whose end the blows would take long to reach) bounces by the rule for a manifold alone, struck record by
+    // struck record.
+    for (const uint32_t i : rattled)
+        seen[find(i)] = 2;
+    for (const uint32_t i : hitOnce)
+        if (seen[find(i)] == 2 && struckPoints(m_constraints[i], m_settings.restitutionThreshold) != 0)
+            bounceAlone(bodies, i);
+    // The others are launched chain by chain, in the order of their first records.
+    for (size_t from = 0; from < hitOnce.size(); ++from) {
+        const uint32_t chainRoot = find(hitOnce[from]);
+        if (chainRoot != hitOnce[from] || seen[chainRoot] == 2)
+            continue;
+        launches.clear();
+        for (size_t k = from; k < hitOnce.size(); ++k) {
+            const uint32_t i = hitOnce[k];
+            if (find(i) != chainRoot)
+                continue;
+            const ContactConstraint& c = m_constraints[i];
+            uint8_t points = 0;
+            Real atSurface[4] = {0.0, 0.0, 0.0, 0.0};
+            for (int p = 0; p < c.pointCount; ++p) {
+                if (!(given[i][static_cast<size_t>(p)] > 0.0))
+                    continue;
+                points = static_cast<uint8_t>(points | 1u << p);
+                atSurface[p] = rowVelocity(model[c.bodyA], model[c.bodyB], c.points[p], c.normal) +
+                               shift[i][static_cast<size_t>(p)];
+            }
+            if (points != 0)
+                launches.push_back(launchOf(bodies, i, points, atSurface, false));
+        }
+        // The launches' impulses are not kept for the next step's warm start, only the sweeps': a row of touching
+        // balls stays touching, and warm started with the blow it passed on it pushed itself apart again (five balls
+        // with e = 1 ended with 15 % more energy than the first ball brought).
+        solved.resize(launches.size());
+        for (size_t l = 0; l < launches.size(); ++l)
+            for (size_t k = 0; k < 4; ++k)
+                solved[l][k] = m_constraints[launches[l].constraint].points[k].normalImpulse;
+        launch(bodies, launches, kChainPasses);
+        for (size_t l = 0; l < launches.size(); ++l)
+            for (size_t k = 0; k < 4; ++k)
+                m_constraints[launches[l].constraint].points[k].normalImpulse = solved[l][k];
     }
 }
 

@@ -97,6 +97,9 @@ struct ContactSolverSettings {
     // Gravity (m/s^2) of the moving bodies. The restitution pass uses it to turn the solver's velocities into the
     // speeds at the instant of impact (see applyRestitution()).
     Vec3 gravity{0.0};
+    // The whole step (s), of which the substeps are parts: the restitution pass bounds a bounce's energy by what the
+    // bodies would have in free flight to its end (see applyRestitution()). 0: no bound.
+    Real step = 0.0;
     // Where a body's stored velocity v sits on its free flight under constant acceleration a: the integrator moves
     // it as the exact parabola through its positions whose velocity is v + flightOffset a h (h the substep). That is
     // +1/2 for symplectic Euler (x += (v + a h) h), 0 for Verlet and RK4 (exact), -1/2 for explicit Euler
@@ -118,11 +121,13 @@ struct ContactSolverCounters {
     uint64_t normalRows = 0;   // normal constraint rows solved (points x iterations)
     uint64_t frictionRows = 0; // friction rows solved: two tangents and the twist per manifold and sweep
     uint64_t restitutionRows = 0;
-    uint64_t sweptBatches = 0; // batches swept by the solve and relax sweeps (each of up to 8 or 4 constraints)
+    uint64_t boundedBounces = 0; // launches of the restitution pass taken back to the energy of free flight
+    uint64_t sweptBatches = 0;   // batches swept by the solve and relax sweeps (each of up to 8 or 4 constraints)
     ContactSolverCounters& operator+=(const ContactSolverCounters& o) {
         normalRows += o.normalRows;
         frictionRows += o.frictionRows;
         restitutionRows += o.restitutionRows;
+        boundedBounces += o.boundedBounces;
         sweptBatches += o.sweptBatches;
         return *this;
     }
@@ -286,6 +291,15 @@ public:
     // is the relative acceleration along the normal (gravity on one body of the pair, not the other), so the target
     // is -e v_impact - flightOffset a_n h. Without the offsets each bounce lost (1 + e) g h / 2 of speed, and the
     // third apex of an e = 0.5 drop from 5 m came out 5.0 % low (issue 4 asks for 3 %).
+    //
+    // A struck manifold whose moving body also touches another bouncing manifold (a ball hitting a row of touching
+    // balls, one landing on a ball that rests on the floor) is one link of a chain, and the rule above is wrong
+    // there: the sweeps stopped the whole row as one lump, and each link's speed before the step says nothing of the
+    // blow it passed on. Such chains are worked out as collisions one after the other, from the velocities at the
+    // step start (bounceChains()), and each of their points leaves at the speed that gives.
+    //
+    // A manifold that holds a side (ContactConstraint::scaleA, scaleB) bounces alone and with the bodies' own masses,
+    // and no bounce leaves its bodies more kinetic energy than free flight through the step would have (launch()).
     void applyRestitution(std::span<SolverBody> bodies);
     // Writes the accumulated impulses back to the manifolds (those given to prepare()) for warm starting in the next
     // step. parallelFor, if given, shares the manifolds out (each is written alone, so the results are the same).
@@ -422,9 +436,31 @@ private:
     template <int W>
     void storeFromBatches(const BatchStore<W>& store, std::span<Manifold* const> manifolds,
                           const ParallelFor& parallelFor, bool bouncersFromRecords) const;
-    // Whether the restitution pass can bounce a point of c: its restitution is not zero and a point approached faster
-    // than the threshold (applyRestitution() asks, besides, that the point pushed back in the sweeps).
+    // Whether the restitution pass reads c's record: its restitution is not zero, and it is between two moving bodies
+    // (a link a chain's collisions may strike, see applyRestitution()) or a point approached faster than the
+    // threshold. (A constraint against a still body that approached slower cannot bounce: its record was 620 bytes
+    // written for nothing, in every resting contact of ramps.obj's cubes on its concrete ramps.)
     bool mayBounce(const ContactConstraint& c) const;
+    // applyRestitution()'s parts: one struck manifold that shares no moving body with another record, and the chains.
+    void bounceAlone(std::span<SolverBody> bodies, uint32_t constraint);
+    void bounceChains(std::span<SolverBody> bodies, std::span<const uint32_t> records,
+                      std::span<const uint32_t> struck);
+    // A constraint's points to launch (bit k for point k) and the normal speed each leaves at.
+    struct Launch {
+        uint32_t constraint = 0;
+        uint8_t points = 0;
+        bool bodiesOwnMasses = false; // swept with the bodies' own masses, not the constraint's held scales
+        Real target[4] = {0.0, 0.0, 0.0, 0.0};
+    };
+    // The launch of c's points in `points` (bits) at normal speeds atSurface leaving the surface: the targets of the
+    // restitution pass (see applyRestitution()).
+    Launch launchOf(std::span<const SolverBody> bodies, uint32_t constraint, uint8_t points, const Real atSurface[4],
+                    bool sweepsFloor) const;
+    // Sweeps the launches together until their impulses settle (at most `passes` sweeps), then takes them back in
+    // proportion as far as needed to leave their bodies no more kinetic energy than free flight from the step start
+    // to its end (and a substep) would have given them.
+    void launch(std::span<SolverBody> bodies, std::span<const Launch> launches, int passes);
+    void sweepLaunches(std::span<SolverBody> bodies, std::span<const Launch> launches, int passes);
     // A record's impulses into its manifold.
     static void storeRecord(const ContactConstraint& c, Manifold& m);
     // The sweeps over batches begin..end of W lanes (ContactSolverWide.cpp).
@@ -485,10 +521,13 @@ private:
     // with the records of those that may bounce only, 73-93 ms and 3.5-4.3 ms, and store_impulses 11-14 ms against
     // 14-19 ms (three interleaved runs of each, one thread, the same frames; Intel Xeon, 2026-11-29).
     mutable std::vector<ContactConstraint> m_constraints;
-    bool m_kept = false;                         // prepare() filled every record of m_constraints
-    bool m_bounceOnly = false;                   // prepare() filled the records of the constraints that may bounce
-    std::vector<uint8_t> m_bouncing;             // per constraint, when m_bounceOnly: 1 if its record is filled
-    bool m_keepConstraints = false;              // keepConstraints()
+    bool m_kept = false;             // prepare() filled every record of m_constraints
+    bool m_bounceOnly = false;       // prepare() filled the records of the constraints that may bounce
+    std::vector<uint8_t> m_bouncing; // per constraint, when m_bounceOnly: 1 if its record is filled
+    bool m_keepConstraints = false;  // keepConstraints()
+    // With restitution on: each solver body's linear and angular velocity at prepare() (the step start), from which
+    // bounceChains() works out a chain's collisions.
+    std::vector<std::pair<Vec3, Vec3>> m_startVelocity;
     std::vector<std::array<uint8_t, 4>> m_order; // per constraint: its ContactConstraint::order
     std::vector<uint8_t> m_batchKey;             // per constraint: its group within its level (buildBatches())
     std::vector<BatchLayout> m_batchLayout;      // per batch (buildBatches())

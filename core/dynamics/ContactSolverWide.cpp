@@ -1119,11 +1119,12 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         if (m_kept) {
             m_constraints[i] = record(l);
         } else if (m_bounceOnly && restitution[l] != 0.0) {
-            // mayBounce(), on the lane's values: most constraints have no point approaching fast enough.
-            bool fast = false;
+            // mayBounce(), on the lane's values: most constraints against still bodies have no point approaching
+            // fast enough.
+            bool keep = batch.bodyA[l] != 0 && batch.bodyB[l] != 0;
             for (int k = 0; k < m.pointCount; ++k)
-                fast = fast || !(relativeVelocity[k][l] > -m_settings.restitutionThreshold);
-            if (fast) {
+                keep = keep || !(relativeVelocity[k][l] > -m_settings.restitutionThreshold);
+            if (keep) {
                 m_constraints[i] = record(l);
                 m_bouncing[i] = 1;
             }

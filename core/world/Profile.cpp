@@ -24,7 +24,7 @@ constexpr std::string_view kCounterNames[kCounterCount] = {
     "friction_rows",   "restitution_rows", "swept_batches", "awake_bodies",       "integrated_bodies",
     "ccd_bodies",      "ccd_hits",         "steps",         "islands_shared_out", "islands_cut",
     "solved_in_parts", "part_imbalance",   "steps_alone",   "team_steps",         "islands_in_body_order",
-    "pushed_contacts"};
+    "pushed_contacts", "bounded_bounces"};
 } // namespace
 
 std::string_view stageName(Stage stage) {

@@ -55,6 +55,7 @@ enum class Counter {
     TeamSteps,          // steps in which a world's team of threads ran at least one job together (ThreadTeam::run())
     IslandsInBodyOrder, // of IslandsSharedOut, the solves whose islands went to the members in runs of body order
     PushedContacts,     // contacts whose points World::pushOutOfContacts() moved a body out of
+    BoundedBounces,     // bounces the restitution pass took back to the energy of free flight (ContactSolver::launch())
     Count
 };
 inline constexpr int kCounterCount = static_cast<int>(Counter::Count);

@@ -288,6 +288,7 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
         w.m_damping = Damping{ws.linearDamping, ws.angularDamping};
     w.m_solverSettings.contactHertz = 0.25 * w.m_fps * w.m_substeps;
     w.m_solverSettings.gravity = w.m_gravity;
+    w.m_solverSettings.step = 1.0 / w.m_fps;
     w.m_solverSettings.flightOffset = w.m_integrator == Integrator::SymplecticEuler ? 0.5
                                       : w.m_integrator == Integrator::ExplicitEuler ? -0.5
                                                                                     : 0.0;
@@ -1412,6 +1413,7 @@ void World::countSolverRows() {
     m_profile.count(Counter::NormalRows, sc.normalRows);
     m_profile.count(Counter::FrictionRows, sc.frictionRows);
     m_profile.count(Counter::RestitutionRows, sc.restitutionRows);
+    m_profile.count(Counter::BoundedBounces, sc.boundedBounces);
     m_profile.count(Counter::SweptBatches, sc.sweptBatches);
 }
 

@@ -102,8 +102,7 @@ struct WorldTuning {
     // took ramps.obj's first 120 frames 2.9-3.0 ms (of the 226-228 ms of all its stages) and pushed 54 contacts
     // (2026-12-05).
     Real pushOutSlop = 0.002;
-    // A lower body whose surface moves into the upper one, or across the contact, faster than this (m/s) is not held
-    // (World::contactHold()).
+    // A lower body whose surface moves into the upper one faster than this (m/s) is not held (World::contactHold()).
     Real holdRiseSpeed = 3.0;
     // A hull whose faces are all at least this fraction of its farthest corner's distance from the centre of mass (a
     // UV sphere, an icosphere from Blender) is a ball to the solver (kBodyRound) in a step in which it turns through
@@ -387,8 +386,6 @@ private:
     HoldGeometry holdGeometry(uint32_t slot) const;
     // Whether the lower body's surface moves into the upper one faster than WorldTuning::holdRiseSpeed at a point.
     bool risingInto(uint32_t slot, const HoldGeometry& g) const;
-    // Whether the lower body's surface slides across the contact faster than WorldTuning::holdRiseSpeed at a point.
-    bool slidingUnder(uint32_t slot, const HoldGeometry& g) const;
     // An inelastic impulse at the contact's fastest closing point, repeated while the lower body rises into the
     // upper one (heightsAboveSupport()).
     void meetRisingLowerBody(uint32_t slot);

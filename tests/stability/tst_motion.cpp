@@ -29,8 +29,8 @@ Scene spunAboutTheVertical(Scene scene, Real mu, Real w0) {
     return scene;
 }
 
-// A floor and a cue ball of radius 0.1 m rolled at `speed` along x into a row of `masses.size()` balls of that radius
-// lying `gap` apart on it (the first `gap` from the cue's path end), all frictionless with restitution e.
+// A floor, a row of `masses.size()` balls of radius 0.1 m lying `gap` apart on it along x from the origin, and a cue
+// ball of that radius 1 m short of the first, sliding into the row at `speed`; all frictionless, with restitution e.
 Scene ballRow(const std::vector<Real>& masses, Real cueMass, Real speed, Real gap, Real e) {
     Scene s;
     s.bodies.push_back(scenes::floorBox());

@@ -89,6 +89,11 @@ inline Inverse inverseOf(const SolverBody& body, Real scale) {
 inline Vec3 inertiaOf(const Inverse& inverse, const Vec3& r, const Vec3& d) {
     return inverse.inertia * glm::cross(r, d);
 }
+// A normal row's velocity change per unit impulse at anchors rA and rB (the inverse of its effective mass).
+inline Real normalK(const Inverse& ia, const Inverse& ib, const Vec3& rA, const Vec3& rB, const Vec3& n) {
+    const Vec3 angularA = angularOf(rA, n), angularB = angularOf(rB, n);
+    return ia.mass + ib.mass + glm::dot(angularA, ia.inertia * angularA) + glm::dot(angularB, ib.inertia * angularB);
+}
 
 // Relative velocity of the anchors along row d of point p: dot(d, vB - vA) + wB . (rB x d) - wA . (rA x d).
 inline Real rowVelocity(const SolverBody& a, const SolverBody& b, const ContactConstraint::Point& p, const Vec3& d) {
@@ -173,10 +178,8 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
         p.rB = roundedToFloat(p.rA + c.anchorOffset);
         // The separation and the masses are rounded to float, as the batches store them (see BatchPoint).
         p.baseSeparation = roundedToFloat(mp.separation - glm::dot(p.rB - p.rA, c.normal));
-        const Vec3 angularA = angularOf(p.rA, c.normal), angularB = angularOf(p.rB, c.normal);
-        const Real normalK =
-            ia.mass + ib.mass + glm::dot(angularA, ia.inertia * angularA) + glm::dot(angularB, ib.inertia * angularB);
-        p.normalMass = normalK > 0.0 ? roundedToFloat(1.0 / normalK) : 0.0;
+        const Real perImpulse = normalK(ia, ib, p.rA, p.rB, c.normal);
+        p.normalMass = perImpulse > 0.0 ? roundedToFloat(1.0 / perImpulse) : 0.0;
         p.normalImpulse = settings.warmStarting ? mp.normalImpulse : 0.0;
         p.maxNormalImpulse = 0.0;
         p.relativeVelocity = glm::dot(c.normal, relativeVelocity(a, b, p.rA, p.rB));
@@ -1267,6 +1270,11 @@ uint8_t struckPoints(const ContactConstraint& c, Real threshold) {
     return points;
 }
 
+// Whether c holds a side still or makes it heavier (ContactConstraint::scaleA, scaleB).
+bool holdsASide(const ContactConstraint& c) {
+    return c.scaleA != 1.0 || c.scaleB != 1.0;
+}
+
 // The kinetic energy of body b moving at v and turning at w (its inverse inertia is in world axes).
 Real kineticEnergy(const SolverBody& b, const Vec3& v, const Vec3& w) {
     if (!(b.invMass > 0.0))
@@ -1275,15 +1283,6 @@ Real kineticEnergy(const SolverBody& b, const Vec3& v, const Vec3& w) {
     if (w != Vec3(0.0) && glm::determinant(b.invInertia) > 0.0)
         e += 0.5 * glm::dot(w, glm::inverse(b.invInertia) * w);
     return e;
-}
-
-// The normal row's effective mass of point p with the inverses ia and ib (as setUpConstraint() works it out,
-// unrounded).
-Real ownNormalMass(const Inverse& ia, const Inverse& ib, const ContactConstraint::Point& p, const Vec3& n) {
-    const Vec3 angularA = angularOf(p.rA, n), angularB = angularOf(p.rB, n);
-    const Real k =
-        ia.mass + ib.mass + glm::dot(angularA, ia.inertia * angularA) + glm::dot(angularB, ib.inertia * angularB);
-    return k > 0.0 ? 1.0 / k : 0.0;
 }
 
 // A chain's collisions one after the other take at most this many blows on one record: with e < 1 each blow passes
@@ -1314,8 +1313,7 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
         if (!hasRecord(i) || !mayBounce(m_constraints[i])) // the same records whether or not all are kept
             continue;
         const ContactConstraint& c = m_constraints[i];
-        const bool held = c.scaleA != 1.0 || c.scaleB != 1.0;
-        if (!held)
+        if (!holdsASide(c))
             records.push_back(static_cast<uint32_t>(i));
         if (struckPoints(c, m_settings.restitutionThreshold) != 0)
             struck.push_back(static_cast<uint32_t>(i));
@@ -1331,8 +1329,8 @@ void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
     const bool chains = m_startVelocity.size() == bodies.size(); // the bodies given to prepare()
     for (const uint32_t i : struck) {
         const ContactConstraint& c = m_constraints[i];
-        const bool held = c.scaleA != 1.0 || c.scaleB != 1.0;
-        if (chains && !held && ((c.bodyA != 0 && touches[c.bodyA] > 1) || (c.bodyB != 0 && touches[c.bodyB] > 1)))
+        if (chains && !holdsASide(c) &&
+            ((c.bodyA != 0 && touches[c.bodyA] > 1) || (c.bodyB != 0 && touches[c.bodyB] > 1)))
             chained.push_back(i);
         else
             bounceAlone(bodies, i);
@@ -1379,7 +1377,8 @@ ContactSolver::Launch ContactSolver::launchOf(std::span<const SolverBody> bodies
     return l;
 }
 
-void ContactSolver::launch(std::span<SolverBody> bodies, std::span<const Launch> launches, int passes) {
+void ContactSolver::launch(std::span<SolverBody> bodies, std::span<const Launch> launches, int passes,
+                           bool warmStartsNext) {
     // Per point, each row's restitution takes the point's own approach speed: the points of a body that lands
     // turning approach at different speeds, and leaving each at e times its own can take more energy out of the
     // sweeps than came in. A 79 kg cone landing on its rim at 52 rad/s with e = 0.9 left with 945 J more than it
@@ -1406,14 +1405,22 @@ void ContactSolver::launch(std::span<SolverBody> bodies, std::span<const Launch>
             const Vec3 g = b.invMass > 0.0 ? m_settings.gravity : Vec3(0.0);
             bound += std::max(kineticEnergy(b, v0, w0), kineticEnergy(b, v0 + g * flight, w0));
         }
-        impulseBefore.resize(launches.size());
+    }
+    impulseBefore.resize(launches.size());
+    for (size_t l = 0; l < launches.size(); ++l)
+        for (size_t k = 0; k < 4; ++k)
+            impulseBefore[l][k] = m_constraints[launches[l].constraint].points[k].normalImpulse;
+    const auto restoreImpulses = [&] {
         for (size_t l = 0; l < launches.size(); ++l)
             for (size_t k = 0; k < 4; ++k)
-                impulseBefore[l][k] = m_constraints[launches[l].constraint].points[k].normalImpulse;
-    }
+                m_constraints[launches[l].constraint].points[k].normalImpulse = impulseBefore[l][k];
+    };
     sweepLaunches(bodies, launches, passes);
-    if (!bounded)
+    if (!bounded) {
+        if (!warmStartsNext)
+            restoreImpulses();
         return;
+    }
     // Kinetic energy along the launch's change d from the velocities before it: E(s) = e0 + e1 s + e2 s^2.
     Real e0 = 0.0, e1 = 0.0, e2 = 0.0;
     for (size_t k = 0; k < ids.size(); ++k) {
@@ -1423,8 +1430,11 @@ void ContactSolver::launch(std::span<SolverBody> bodies, std::span<const Launch>
         e2 += kineticEnergy(b, b.v - v, b.w - w);
         e1 += kineticEnergy(b, b.v, b.w) - kineticEnergy(b, v, w) - kineticEnergy(b, b.v - v, b.w - w);
     }
-    if (e0 + e1 + e2 <= bound)
+    if (e0 + e1 + e2 <= bound) {
+        if (!warmStartsNext)
+            restoreImpulses();
         return;
+    }
     Real s = 0.0;
     if (e0 < bound && e2 > 0.0)
         s = std::clamp((-e1 + std::sqrt(std::max(e1 * e1 - 4.0 * e2 * (e0 - bound), 0.0))) / (2.0 * e2), 0.0, 1.0);
@@ -1434,6 +1444,10 @@ void ContactSolver::launch(std::span<SolverBody> bodies, std::span<const Launch>
         const auto [v, w] = before[k];
         b.v = v + s * (b.v - v);
         b.w = w + s * (b.w - w);
+    }
+    if (!warmStartsNext) {
+        restoreImpulses();
+        return;
     }
     for (size_t l = 0; l < launches.size(); ++l)
         for (size_t k = 0; k < 4; ++k) {
@@ -1457,7 +1471,9 @@ void ContactSolver::sweepLaunches(std::span<SolverBody> bodies, std::span<const 
                     continue;
                 ContactConstraint::Point& p = c.points[k];
                 const Real vn = rowVelocity(a, b, p, c.normal);
-                const Real mass = l.bodiesOwnMasses ? ownNormalMass(ia, ib, p, c.normal) : p.normalMass;
+                // (The bodies' own masses: the effective mass unrounded, as setUpConstraint() works it out.)
+                const Real perImpulse = l.bodiesOwnMasses ? normalK(ia, ib, p.rA, p.rB, c.normal) : 0.0;
+                const Real mass = l.bodiesOwnMasses ? (perImpulse > 0.0 ? 1.0 / perImpulse : 0.0) : p.normalMass;
                 Real impulse = -mass * (vn - l.target[k]);
                 const Real newImpulse = std::max(p.normalImpulse + impulse, 0.0);
                 impulse = newImpulse - p.normalImpulse;
@@ -1490,8 +1506,8 @@ void ContactSolver::bounceAlone(std::span<SolverBody> bodies, uint32_t constrain
     // the ground's: a 536 kg cylinder falling at 6.9 m/s onto a 3 kg cone spinning at 52 rad/s (its surface rising at
     // 2.8 m/s there) left at 8.9 m/s, and a random scene of bouncing shapes gained 31 % of its energy (2026-12-05).
     // A bounce is a collision, so it takes the bodies' own masses.
-    l.bodiesOwnMasses = c.scaleA != 1.0 || c.scaleB != 1.0;
-    launch(bodies, std::span<const Launch>(&l, 1), std::popcount(points) == 1 ? 1 : kRestitutionPasses);
+    l.bodiesOwnMasses = holdsASide(c);
+    launch(bodies, std::span<const Launch>(&l, 1), std::popcount(points) == 1 ? 1 : kRestitutionPasses, true);
 }
 
 void ContactSolver::bounceChains(std::span<SolverBody> bodies, std::span<const uint32_t> records,
@@ -1518,7 +1534,7 @@ void ContactSolver::bounceChains(std::span<SolverBody> bodies, std::span<const u
     thread_local std::vector<uint8_t> seen, queued, modelled;
     thread_local std::vector<uint16_t> blowsTaken;
     thread_local std::vector<SolverBody> model;
-    thread_local std::vector<std::array<Real, 4>> given, shift, solved;
+    thread_local std::vector<std::array<Real, 4>> given, shift;
     thread_local std::vector<Launch> launches;
     // Each moving body's records.
     first.assign(n + 1, 0);
@@ -1693,14 +1709,7 @@ void ContactSolver::bounceChains(std::span<SolverBody> bodies, std::span<const u
         // The launches' impulses are not kept for the next step's warm start, only the sweeps': a row of touching
         // balls stays touching, and warm started with the blow it passed on it pushed itself apart again (five balls
         // with e = 1 ended with 15 % more energy than the first ball brought).
-        solved.resize(launches.size());
-        for (size_t l = 0; l < launches.size(); ++l)
-            for (size_t k = 0; k < 4; ++k)
-                solved[l][k] = m_constraints[launches[l].constraint].points[k].normalImpulse;
-        launch(bodies, launches, kChainPasses);
-        for (size_t l = 0; l < launches.size(); ++l)
-            for (size_t k = 0; k < 4; ++k)
-                m_constraints[launches[l].constraint].points[k].normalImpulse = solved[l][k];
+        launch(bodies, launches, kChainPasses, false);
     }
 }
 

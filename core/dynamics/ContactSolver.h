@@ -458,8 +458,9 @@ private:
                     bool sweepsFloor) const;
     // Sweeps the launches together until their impulses settle (at most `passes` sweeps), then takes them back in
     // proportion as far as needed to leave their bodies no more kinetic energy than free flight from the step start
-    // to its end (and a substep) would have given them.
-    void launch(std::span<SolverBody> bodies, std::span<const Launch> launches, int passes);
+    // to its end (and a substep) would have given them. Unless warmStartsNext, the points' accumulated impulses are
+    // left as the sweeps left them, for the next step's warm start.
+    void launch(std::span<SolverBody> bodies, std::span<const Launch> launches, int passes, bool warmStartsNext);
     void sweepLaunches(std::span<SolverBody> bodies, std::span<const Launch> launches, int passes);
     // A record's impulses into its manifold.
     static void storeRecord(const ContactConstraint& c, Manifold& m);

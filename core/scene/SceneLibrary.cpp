@@ -24,6 +24,12 @@ BodyDef anchorBox(const std::string& name, const Vec3& half, const Vec3& positio
     return b;
 }
 
+std::string numbered(const std::string& base, int i) {
+    return base + "." + std::to_string(i);
+}
+
+} // namespace
+
 BodyDef sphere(const std::string& name, Real radius, const Vec3& position) {
     BodyDef b;
     b.name = name;
@@ -32,12 +38,6 @@ BodyDef sphere(const std::string& name, Real radius, const Vec3& position) {
     b.position = position;
     return b;
 }
-
-std::string numbered(const std::string& base, int i) {
-    return base + "." + std::to_string(i);
-}
-
-} // namespace
 
 BodyDef floorBox(const std::string& name) {
     return anchorBox(name, Vec3(20.0, 0.5, 20.0), Vec3(0.0, -0.5, 0.0));

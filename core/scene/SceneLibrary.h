@@ -13,6 +13,7 @@ namespace rl::scenes {
 
 // A 40 x 1 x 40 m anchor box whose top face is y = 0.
 BodyDef floorBox(const std::string& name = "Floor");
+BodyDef sphere(const std::string& name, Real radius, const Vec3& position); // dynamic, of the default material
 
 Scene stack(int cubes);                                 // unit cubes stacked exactly touching on the floor
 Scene pyramid(int base);                                // 2D pyramid of unit cubes: base + (base-1) + ... + 1

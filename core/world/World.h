@@ -267,6 +267,15 @@ private:
     void commitPairs();
     // Broadphase and narrowphase: the manifold of every pair within its margin, and the touching contacts.
     void findAndCollidePairs();
+    // Sets every push speed to 0 (at the step's start: the pairs collided before the lists are committed take none).
+    void clearPushSpeeds();
+    // The pushes of this step's new pairs, once the lists are committed; lists in m_pushRaised the bodies whose
+    // push speed rose.
+    void pushSpeedsOfNewPairs();
+    // Whether a and b can strike each other in the step hard enough to matter (pushSpeedsOfNewPairs()).
+    bool mayPush(uint32_t a, uint32_t b) const;
+    // Raises m_pushSpeed by m_pushPairs, in two passes, and lists the bodies raised.
+    void applyPushes();
     void buildIslands();
     void solve();
     void countSolverRows(); // the solver's rows of this step into the profile
@@ -460,6 +469,13 @@ private:
     std::vector<Transform> m_transforms;
     std::vector<Aabb> m_bounds; // tight world boxes of the shapes, at the start of the step
     std::vector<Real> m_reach;  // |v| + |w| radius at the start of the step, m/s: how fast any point can move
+    // How much a body's speed may change this step when a moving neighbour new to it strikes it, m/s
+    // (pushSpeedsOfNewPairs()); nonzero only for the bodies listed in m_pushedBodies.
+    std::vector<Real> m_pushSpeed;
+    std::vector<uint32_t> m_pushedBodies;
+    std::vector<std::pair<uint32_t, uint32_t>> m_pushPairs; // pushSpeedsOfNewPairs()'s scratch
+    std::vector<uint32_t> m_pushRaised;                     // bodies whose push speed the new pairs raised
+    std::vector<uint8_t> m_pushMark;                        // per body, while m_pushRaised is walked
     // Moving bodies whose proxy must be reinserted this step, with its new fat box (refreshTransforms()).
     std::vector<uint8_t> m_reinsert;
     std::vector<Aabb> m_fatBoxes;

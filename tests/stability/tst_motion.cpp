@@ -392,10 +392,10 @@ private slots:
 
     // A heavy ball meets a light one in mid-air just above the floor and drives it down further in one step than the
     // light ball's own speed would take it: the floor must be in the light ball's contacts at the step's start all
-    // the same (World::pushSpeeds()). The two meet in the first step, new to the world and to each other, or fall
-    // for four frames before (the world then holds their pairs from the steps before). (A 314 kg ball at 6 m/s onto
-    // a 4.5 kg one 40 mm up, falling at 1.05 m/s, in the first step: 62 mm deep when only the light ball's own speed
-    // widened its margin to the floor; 2026-12-05.)
+    // the same (World::pushSpeedsOfNewPairs()). The two meet in the first step, new to the world and to each other, or
+    // fall for four frames before (the world then holds their pairs from the steps before). (A 314 kg ball at 6 m/s
+    // onto a 4.5 kg one 40 mm up, falling at 1.05 m/s, in the first step: 62 mm deep when only the light ball's own
+    // speed widened its margin to the floor; 2026-12-05.)
     void heavyBallDrivesALightOneIntoNothing_data() {
         QTest::addColumn<Real>("above");
         QTest::addColumn<Real>("heavySpeed");

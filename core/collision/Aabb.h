@@ -52,6 +52,12 @@ struct Aabb {
                min.z <= other.max.z && other.min.z <= max.z;
     }
 
+    // The widest gap between the two boxes along an axis: how far apart they are at least (negative: they overlap).
+    Real gapTo(const Aabb& other) const {
+        const Vec3 gap = glm::max(other.min - max, min - other.max);
+        return std::max({gap.x, gap.y, gap.z});
+    }
+
     Aabb fattened(Real margin) const { return {min - Vec3(margin), max + Vec3(margin)}; }
 
     // Grows the box along a predicted displacement, so a body moving steadily stays inside it for a few steps.

@@ -854,9 +854,7 @@ bool World::mayPush(uint32_t a, uint32_t b) const {
     const Real reach = (m_reach[a] + m_reach[b]) * dt;
     if (reach < 0.5 * spec)
         return false;
-    const Aabb &boxA = m_bounds[a], &boxB = m_bounds[b];
-    const Vec3 gap = glm::max(boxB.min - boxA.max, boxA.min - boxB.max);
-    return std::max({gap.x, gap.y, gap.z}) <= spec + reach;
+    return m_bounds[a].gapTo(m_bounds[b]) <= spec + reach;
 }
 
 void World::applyPushes() {
@@ -899,9 +897,7 @@ void World::findAndCollidePairs() {
     const auto filter = [&](uint32_t slot, uint32_t a, uint32_t b, std::vector<NarrowTest>& tests) {
         if (!m_state.isMoving(a) && !m_state.isMoving(b))
             return;
-        const Aabb &boxA = m_bounds[a], &boxB = m_bounds[b];
-        const Vec3 gap = glm::max(boxB.min - boxA.max, boxA.min - boxB.max);
-        const Real apart = std::max({gap.x, gap.y, gap.z});
+        const Real apart = m_bounds[a].gapTo(m_bounds[b]);
         // Most pairs are told apart by a bound of the margin from each body's own speed (|vB - vA| <= |vA| +
         // |vB|; the factor covers rounding), which costs no square root; the rest by the margin itself.
         const Real bound =

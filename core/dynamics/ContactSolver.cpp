@@ -1683,16 +1683,19 @@ void ContactSolver::bounceChains(std::span<SolverBody> bodies, std::span<const u
     for (const uint32_t i : hitOnce)
         if (seen[find(i)] == 2 && struckPoints(m_constraints[i], m_settings.restitutionThreshold) != 0)
             bounceAlone(bodies, i);
-    // The others are launched chain by chain, in the order of their first records.
-    for (size_t from = 0; from < hitOnce.size(); ++from) {
-        const uint32_t chainRoot = find(hitOnce[from]);
-        if (chainRoot != hitOnce[from] || seen[chainRoot] == 2)
-            continue;
+    // The others are launched chain by chain, in the order of their first records (a chain's root), each chain's
+    // records in constraint order: the records sorted by (root, record) are the chains one after the other.
+    thread_local std::vector<std::pair<uint32_t, uint32_t>> byChain;
+    byChain.clear();
+    for (const uint32_t i : hitOnce)
+        if (const uint32_t chainRoot = find(i); seen[chainRoot] != 2)
+            byChain.emplace_back(chainRoot, i);
+    std::sort(byChain.begin(), byChain.end());
+    for (size_t k = 0; k < byChain.size();) {
+        const uint32_t chainRoot = byChain[k].first;
         launches.clear();
-        for (size_t k = from; k < hitOnce.size(); ++k) {
-            const uint32_t i = hitOnce[k];
-            if (find(i) != chainRoot)
-                continue;
+        for (; k < byChain.size() && byChain[k].first == chainRoot; ++k) {
+            const uint32_t i = byChain[k].second;
             const ContactConstraint& c = m_constraints[i];
             uint8_t points = 0;
             Real atSurface[4] = {0.0, 0.0, 0.0, 0.0};

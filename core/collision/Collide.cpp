@@ -254,8 +254,9 @@ bool clipFaces(const Shape& ref, const Transform& xfRef, uint32_t refFace, const
 // along n (the line through it parallel to n meets both face planes). Every such pair of surface points is at
 // least the edges' separation apart, since n separates the shapes, so no point pushes early. One point at the
 // edges' witnesses let a 0.2 m cube of ramps.obj that hit another edge first at 7 m/s spin (22 rad/s) and turn
-// a corner 71 mm into it within the next step: nothing held the far side. Returns false when the clip leaves
-// nothing within spec; the caller then keeps the single point.
+// a corner 71 mm into it within the next step: nothing held the far side. Edges that overlap are clipped the same
+// way where the pair closes or turns fast (CollideOptions::clipOverlappingEdgesFrom), each point no deeper than the
+// edges' overlap. Returns false when the clip leaves nothing within spec; the caller then keeps the single point.
 bool clipSpeculativeEdges(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, const Vec3& n,
                           const Vec3& witnessA, const Vec3& witnessB, Real witnessSeparation, Real spec,
                           Manifold& out) {
@@ -279,8 +280,12 @@ bool clipSpeculativeEdges(const Shape& a, const Transform& xfA, const Shape& b, 
 
     thread_local Candidates candidates;
     candidates.clear();
+    // Where the edges overlap (witnessSeparation < 0), n does not separate the shapes and a point's separation from
+    // A's face plane can be below the overlap along n, the least by which the shapes overlap along any axis: no
+    // point is taken deeper than that.
+    const Real floorSeparation = witnessSeparation < 0.0 ? witnessSeparation : -std::numeric_limits<Real>::max();
     for (const ClipVertex& v : poly) {
-        const Real s = separation(v.p); // from A's face plane to the point, along n
+        const Real s = std::max(separation(v.p), floorSeparation); // from A's face plane to the point, along n
         if (s <= spec)
             candidates.add(v.p, s, featureHash(kTagEdge + 48, fa, fb, v.feature));
     }
@@ -324,6 +329,8 @@ bool clipAlongNormal(const Shape& a, const Transform& xfA, const Shape& b, const
 
 bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, Real spec,
                       Manifold& out, const CollideOptions& options) {
+    // Whether an edge contact at separation sep is clipped (clipSpeculativeEdges()) rather than one point.
+    const auto edgesClip = [&](Real sep) { return sep > 0.0 || spec >= options.clipOverlappingEdgesFrom; };
     const bool useEpa = options.method == PolyhedronMethod::GjkEpa ||
                         (options.method == PolyhedronMethod::Auto &&
                          a.polyhedron->edges.size() * b.polyhedron->edges.size() > kSatMaxEdgePairs);
@@ -358,7 +365,7 @@ bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, cons
                 out = m;
                 return true;
             }
-            if (sep > 0.0 && clipSpeculativeEdges(a, xfA, b, xfB, n, pa, pb, sep, spec, m)) {
+            if (edgesClip(sep) && clipSpeculativeEdges(a, xfA, b, xfB, n, pa, pb, sep, spec, m)) {
                 m.bodyA = out.bodyA;
                 m.bodyB = out.bodyB;
                 out = m;
@@ -385,7 +392,7 @@ bool collidePolyhedra(const Shape& a, const Transform& xfA, const Shape& b, cons
         return clipFaces(a, xfA, sat.face, b, xfB, true, spec, out);
     if (sat.feature == SatFeature::FaceB)
         return clipFaces(b, xfB, sat.face, a, xfA, false, spec, out);
-    if (sat.separation > 0.0 && !a.isFlat() && !b.isFlat()) {
+    if (edgesClip(sat.separation) && !a.isFlat() && !b.isFlat()) {
         Manifold m;
         if (clipSpeculativeEdges(a, xfA, b, xfB, sat.normal, sat.pointA, sat.pointB, sat.separation, spec, m)) {
             m.bodyA = out.bodyA;

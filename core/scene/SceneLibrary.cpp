@@ -5,9 +5,7 @@
 
 namespace rl::scenes {
 
-namespace {
-
-BodyDef box(const std::string& name, const Vec3& half, const Vec3& position, const Quat& orientation = identityQuat()) {
+BodyDef box(const std::string& name, const Vec3& half, const Vec3& position, const Quat& orientation) {
     BodyDef b;
     b.name = name;
     b.shape.type = ShapeType::Box;
@@ -16,6 +14,8 @@ BodyDef box(const std::string& name, const Vec3& half, const Vec3& position, con
     b.orientation = orientation;
     return b;
 }
+
+namespace {
 
 BodyDef anchorBox(const std::string& name, const Vec3& half, const Vec3& position,
                   const Quat& orientation = identityQuat()) {

@@ -14,6 +14,8 @@ namespace rl::scenes {
 // A 40 x 1 x 40 m anchor box whose top face is y = 0.
 BodyDef floorBox(const std::string& name = "Floor");
 BodyDef sphere(const std::string& name, Real radius, const Vec3& position); // dynamic, of the default material
+// A dynamic box of the default material with the given half extents.
+BodyDef box(const std::string& name, const Vec3& half, const Vec3& position, const Quat& orientation = identityQuat());
 
 Scene stack(int cubes);                                 // unit cubes stacked exactly touching on the floor
 Scene pyramid(int base);                                // 2D pyramid of unit cubes: base + (base-1) + ... + 1

@@ -780,7 +780,11 @@ void World::collidePair(uint32_t slot, Real margin) {
     Manifold fresh;
     fresh.bodyA = a;
     fresh.bodyB = b;
-    collide(m_shapes[a], xfA, m_shapes[b], xfB, margin, fresh);
+    CollideOptions options;
+    // Overlapping edges are clipped like edges apart (CollideOptions) where the pair's margin is at least twice the
+    // speculative distance, that is where its bodies' speeds and turns may close it by that much within the step.
+    options.clipOverlappingEdgesFrom = 2.0 * m_tuning.speculativeDistance;
+    collide(m_shapes[a], xfA, m_shapes[b], xfB, margin, fresh, options);
     if (fresh.pointCount > 0 && (m_turnsThroughFeatures[a] || m_turnsThroughFeatures[b])) {
         const Real dt = 1.0 / m_fps;
         const auto turn = [&](uint32_t i) {

@@ -337,6 +337,58 @@ private slots:
         QVERIFY(closest < 0.01 + 1e-6); // the edges' crossing is among the points
     }
 
+    // The same cubes with B's edge 1 cm into A's: one point at the edges' witnesses, unless the speculative distance
+    // is at least CollideOptions::clipOverlappingEdgesFrom (a pair closing or turning fast); then the faces that
+    // face each other along the edge axis are clipped, and no point is deeper than the edges' overlap.
+    void overlappingEdgeContactHasFacePointsWhenFast_data() {
+        QTest::addColumn<PolyhedronMethod>("method");
+        QTest::addColumn<Real>("spec");
+        QTest::addColumn<int>("fewestPoints");
+        QTest::newRow("sat, at rest") << PolyhedronMethod::Sat << 0.03 << 1;
+        QTest::newRow("sat, fast") << PolyhedronMethod::Sat << 0.05 << 3;
+        QTest::newRow("gjk-epa, at rest") << PolyhedronMethod::GjkEpa << 0.03 << 1;
+        QTest::newRow("gjk-epa, fast") << PolyhedronMethod::GjkEpa << 0.05 << 3;
+    }
+    void overlappingEdgeContactHasFacePointsWhenFast() {
+        QFETCH(PolyhedronMethod, method);
+        QFETCH(Real, spec);
+        QFETCH(int, fewestPoints);
+        const Shape cube = mustShape(makeBox(Vec3(0.1)));
+        const Real corner = 0.1 * std::sqrt(2.0);
+        const Transform xa = Transform::fromQuat(Vec3(0.0), axisAngle(Vec3(0, 0, 1), kPi / 4));
+        const Quat turn = axisAngle(Vec3(0, 1, 0), 10.0 * kPi / 180.0);
+        const Transform xb =
+            Transform::fromQuat(Vec3(0.0, 2.0 * corner - 0.01, 0.0), turn * axisAngle(Vec3(0, 0, 1), kPi / 4));
+        const SatResult sat = satPolyhedra(cube, xa, cube, xb);
+        QVERIFY(sat.feature == SatFeature::EdgePair);
+        QVERIFY(std::abs(sat.separation + 0.01) < 1e-9);
+        CollideOptions options;
+        options.method = method;
+        options.clipOverlappingEdgesFrom = 0.04;
+        Manifold m;
+        QVERIFY(collide(cube, xa, cube, xb, spec, m, options));
+        QVERIFY(std::abs(glm::dot(m.normal, sat.normal) - 1.0) < 1e-6);
+        QVERIFY(m.pointCount >= fewestPoints);
+        if (fewestPoints == 1)
+            QCOMPARE(m.pointCount, 1);
+        Real deepest = 1.0;
+        for (int k = 0; k < m.pointCount; ++k) {
+            const ContactPoint& p = m.points[k];
+            QVERIFY(p.separation >= -0.01 - 1e-6);
+            QVERIFY(p.separation <= spec);
+            deepest = std::min(deepest, p.separation);
+            const Vec3 pa = xa.apply(p.localA), pb = xb.apply(p.localB);
+            QVERIFY(glm::length(glm::cross(pb - pa, m.normal)) < 1e-6);
+        }
+        QVERIFY(deepest < -0.01 + 1e-6); // the edges' overlap is among the points
+        // By default (CollideOptions{}), never clipped.
+        Manifold single;
+        CollideOptions defaults;
+        defaults.method = method;
+        QVERIFY(collide(cube, xa, cube, xb, spec, single, defaults));
+        QCOMPARE(single.pointCount, 1);
+    }
+
     // A speculative edge contact must engage at the shapes' true distance: its nearest point may not be farther
     // apart than GJK says the shapes are. The faces that face each other along the axis need not hold the closest
     // edges; before the edges' witnesses joined such manifolds, 71 of 3,000 random pairs engaged late, by up to

@@ -242,8 +242,9 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
         }
         {
             const Shape& s = w.m_shapes.back();
-            w.m_turnsThroughFeatures.push_back(
-                static_cast<uint8_t>(!body.anchor && s.polyhedron && !s.polyhedron->isBox && !s.polyhedron->flat));
+            w.m_turnsThroughFeatures.push_back(body.anchor || !s.polyhedron || s.polyhedron->flat ? 0
+                                               : s.polyhedron->isBox                              ? kTurnsBoxCorner
+                                                                                                  : kTurnsAnyCorner);
         }
         // Radius about the centre of mass: how fast a spinning body's surface can move. (The shape's own bounding
         // radius is about the shape origin, which for an OBJ object is the file's origin, far from the body.)
@@ -789,7 +790,9 @@ void World::collidePair(uint32_t slot, Real margin) {
         const Real dt = 1.0 / m_fps;
         const auto turn = [&](uint32_t i) {
             const Vec3& w = m_state.angularVelocity[i];
-            if (!m_turnsThroughFeatures[i] || !(glm::length(w) * dt * m_radius[i] > 1e-3)) // no corner moves 1 mm
+            // No corner moves 1 mm (a box: WorldTuning::boxTurnCorner).
+            const Real least = m_turnsThroughFeatures[i] == kTurnsBoxCorner ? m_tuning.boxTurnCorner : 1e-3;
+            if (!m_turnsThroughFeatures[i] || !(glm::length(w) * dt * m_radius[i] > least))
                 return identityQuat();
             // What the solver's anchors will turn by (round bodies: none, or the swing about their roll axis).
             return m_state.anchorTurnQuat(i, rotationFromVector(w * dt), m_state.orientation[i]);

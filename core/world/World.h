@@ -124,6 +124,13 @@ struct WorldTuning {
     int relaxIterations = 1;
     // CCD sweeps a body that moves more than this fraction of its smallest size in one step.
     Real ccdFraction = 0.5;
+    // A box whose corners move more than this (m) in a step by its turn gets the corners the turn brings towards its
+    // neighbours as contact points (addTurnedSupports(); other hulls from 1 mm on). Over 600 frames of a bouncing pile
+    // of 1,000 boxes (e = 0.5), 64 frames held a contact deeper than 1 cm against 83 without, the deepest 51.2 mm
+    // against 71.3; ramps.obj 20 frames against 22; ramps.obj's first 120 frames took 2.068-2.077 ms a step against
+    // 2.073-2.088 (`bench ramps --frames 120 --runs 3`, two rounds by turns). From 1 mm on, as for the other hulls,
+    // ramps.obj's step took 12 % longer (2026-12-05). Measured 2026-12-06.
+    Real boxTurnCorner = 0.02;
     // A pair's manifold is reused (its points refreshed from their local witnesses, as Bullet's persistent
     // manifolds and Jolt's body-pair cache do) while no point of B has moved more than this relative to A since it
     // was computed (m; at most a tenth of the smaller body's thinnest size). Measured 2026-11-26 (6 x 2 defaults):
@@ -437,12 +444,14 @@ private:
     std::vector<Quat> m_sleepAnchorOrientation;
     std::vector<Real> m_minExtent;
     std::vector<Real> m_middleExtent; // per body: the middle one of its shape's three extents (sizeRefinement())
-    // Per body: a hull other than a box, whose turn within a step may bring corners into contact that its manifold,
-    // taken at the step's start, does not hold (collidePair(), addTurnedSupports()). Boxes are left out: a box face's
-    // four corners are all in its manifold when they are within the margin, and with boxes in, ramps.obj's step took
-    // 2.38-2.40 ms against 2.12-2.14 (+12 %, medians of 120 frames, two runs each by turns, 2026-12-05) for the same
-    // deepest contact in its first 2 s (52.4 against 52.7 mm).
+    // Per body: whether its turn within a step may bring corners into contact that its manifold, taken at the step's
+    // start, does not hold (collidePair(), addTurnedSupports()): kTurnsAnyCorner for a hull other than a box, from a
+    // corner's 1 mm on; kTurnsBoxCorner for a box, only from WorldTuning::boxTurnCorner on (a box face's four
+    // corners are all in its manifold when they are within the margin, and from 1 mm on, ramps.obj's step took
+    // 2.38-2.40 ms against 2.12-2.14, +12 %, medians of 120 frames, two runs each by turns, 2026-12-05, for the same
+    // deepest contact in its first 2 s, 52.4 against 52.7 mm); 0 for none.
     std::vector<uint8_t> m_turnsThroughFeatures;
+    static constexpr uint8_t kTurnsAnyCorner = 1, kTurnsBoxCorner = 2;
     std::vector<uint32_t> m_pushedContacts; // pushOutOfContacts(): the contacts its first pass moved a body out of
     std::vector<Real> m_radius;             // largest distance from the centre of mass to the surface
     // Hulls shaped like balls, cylinders or cones (WorldTuning::roundHullRoundness): each with the spin (rad/s, about

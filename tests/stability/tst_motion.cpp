@@ -724,6 +724,35 @@ private slots:
         QVERIFY(stats.maxPenetration < 0.01);
     }
 
+    // Two more boxes of that pile, both moving, in face contact: the upper one (79 kg) falling at 2.8 m/s and
+    // turning at 13.7 rad/s, the lower one (68 kg) turning at 9.4 rad/s. The manifold holds the corners that faced
+    // each other at the step's start; the turns brought another round, 67.6 mm into the other box in one step. With
+    // the corners a box's turn brings towards its neighbour added once they move more than 2 cm in the step
+    // (WorldTuning::boxTurnCorner), 0.7 mm (2026-12-06). (With the lower box anchored, 42.5 mm either way: not yet.)
+    void turningBoxesMeetCornerFirst() {
+        const auto box = [](const char* name, const Vec3& half, const Vec3& position, const Quat& orientation) {
+            BodyDef b = scenes::box(name, half, position, orientation);
+            b.restitution = 0.5;
+            return b;
+        };
+        BodyDef lower = box("Lower", Vec3(0.2035814, 0.2161822, 0.1927282), Vec3(2.860568, 2.223507, -3.971819),
+                            Quat(0.9605005, 0.0135724, 0.09993256, -0.2593608));
+        lower.velocity = Vec3(1.393733, -0.7981015, 0.2485836);
+        lower.angularVelocity = Vec3(-2.058577, 3.688754, -8.356362);
+        BodyDef upper = box("Upper", Vec3(0.1615028, 0.2549494, 0.2387746), Vec3(3.055979, 2.613092, -3.992078),
+                            Quat(0.8856193, -0.02701502, 0.1078326, 0.4509111));
+        upper.velocity = Vec3(-0.05725528, -2.812669, -0.2922887);
+        upper.angularVelocity = Vec3(-4.78871, 1.628526, 12.76246);
+        Scene s;
+        s.bodies = {lower, upper};
+        World w = makeWorld(s);
+        const RunStats stats = run(w, 30);
+        qInfo("deepest contact %.2f mm", 1e3 * stats.maxPenetration);
+        QVERIFY(stats.allFinite);
+        // The first step starts 6.5 mm deep.
+        QVERIFY(stats.maxPenetration < 0.01);
+    }
+
     // A top: a cone of 32 sides (10 cm radius, 30 cm to its tip) spinning about its axis on its tip, the axis 0.3 rad
     // from vertical. The rows hold their points' velocities at anchors fixed at the step's start; the tip, off the
     // axis the body turns about while it wobbles, follows an arc while they follow its chord, and it sank about as the

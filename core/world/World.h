@@ -126,11 +126,13 @@ struct WorldTuning {
     Real ccdFraction = 0.5;
     // A box whose corners move more than this (m) in a step by its turn gets the corners the turn brings towards its
     // neighbours as contact points (addTurnedSupports(); other hulls from 1 mm on). Over 600 frames of a bouncing pile
-    // of 1,000 boxes (e = 0.5), 64 frames held a contact deeper than 1 cm against 83 without, the deepest 51.2 mm
-    // against 71.3; ramps.obj 20 frames against 22; ramps.obj's first 120 frames took 2.068-2.077 ms a step against
-    // 2.073-2.088 (`bench ramps --frames 120 --runs 3`, two rounds by turns). From 1 mm on, as for the other hulls,
-    // ramps.obj's step took 12 % longer (2026-12-05). Measured 2026-12-06.
-    Real boxTurnCorner = 0.02;
+    // of 1,000 boxes (e = 0.5), 72 frames held a contact deeper than 1 cm against 83 without, the deepest 51.2 mm
+    // against 71.3; ramps.obj 20 frames against 22. ramps.obj's first 120 frames took 2.066-2.078 ms a step against
+    // 2.043-2.058 at 3056342, before these corners and the clipped overlapping edges (CollideOptions), and 2.044-2.145
+    // with those edges alone (`bench ramps --frames 120 --runs 3 --no-bullet`, three rounds by turns); from 2 cm on,
+    // 64 frames in the pile and 2.103-2.120 ms; from 1 mm on, as for the other hulls, ramps.obj's step took 12 %
+    // longer (2026-12-05). Measured 2026-12-06.
+    Real boxTurnCorner = 0.05;
     // A pair's manifold is reused (its points refreshed from their local witnesses, as Bullet's persistent
     // manifolds and Jolt's body-pair cache do) while no point of B has moved more than this relative to A since it
     // was computed (m; at most a tenth of the smaller body's thinnest size). Measured 2026-11-26 (6 x 2 defaults):

@@ -727,7 +727,7 @@ private slots:
     // Two more boxes of that pile, both moving, in face contact: the upper one (79 kg) falling at 2.8 m/s and
     // turning at 13.7 rad/s, the lower one (68 kg) turning at 9.4 rad/s. The manifold holds the corners that faced
     // each other at the step's start; the turns brought another round, 67.6 mm into the other box in one step. With
-    // the corners a box's turn brings towards its neighbour added once they move more than 2 cm in the step
+    // the corners a box's turn brings towards its neighbour added once they move more than 5 cm in the step
     // (WorldTuning::boxTurnCorner), 0.7 mm (2026-12-06). (With the lower box anchored, 42.5 mm either way: not yet.)
     void turningBoxesMeetCornerFirst() {
         const auto box = [](const char* name, const Vec3& half, const Vec3& position, const Quat& orientation) {

@@ -817,7 +817,6 @@ void World::collidePair(uint32_t slot, Real margin) {
 void World::clearPushSpeeds() {
     if (m_pushSpeed.size() != m_state.size()) {
         m_pushSpeed.assign(m_state.size(), 0.0);
-        m_pushMark.assign(m_state.size(), 0);
         m_pushedBodies.clear();
     }
     for (const uint32_t i : m_pushedBodies)
@@ -847,7 +846,6 @@ void World::pushSpeedsOfNewPairs() {
     // first 120 frames (the tumbling cubes' relative speeds widened most margins), and its bake took 2.48 ms a step on
     // one thread against 1.85 (one run each); pushed by the new pairs, 0.1 % more pairs tested, the same time.
     m_pushPairs.clear();
-    m_pushRaised.clear();
     for (const size_t i : m_newPairs)
         if (const auto [a, b] = m_pairBodies[i]; mayPush(a, b))
             m_pushPairs.emplace_back(a, b);
@@ -870,10 +868,6 @@ void World::applyPushes() {
             return;
         if (m_pushSpeed[i] == 0.0)
             m_pushedBodies.push_back(i);
-        if (!m_pushMark[i]) {
-            m_pushMark[i] = 1;
-            m_pushRaised.push_back(i);
-        }
         m_pushSpeed[i] = speed;
     };
     for (int pass = 0; pass < 2; ++pass) {
@@ -1077,7 +1071,7 @@ void World::findAndCollidePairs() {
         commitPairs();
     }
     pushSpeedsOfNewPairs();
-    if (!m_pushRaised.empty()) {
+    if (!m_pushedBodies.empty()) {
         // A new neighbour can push some bodies faster than the pairs already collided allowed for: those of their
         // pairs that did not touch are filtered and collided again with the wider margins, in pair order, by member
         // 0 (a fast body meets a new neighbour: 4 times in ramps.obj's first 120 frames). The new pairs are
@@ -1093,12 +1087,10 @@ void World::findAndCollidePairs() {
             }
             const auto [a, b] = m_pairBodies[i];
             const uint32_t slot = m_pairContacts[i];
-            if ((m_pushMark[a] || m_pushMark[b]) && !m_contactTouching[slot])
+            if ((m_pushSpeed[a] > 0.0 || m_pushSpeed[b] > 0.0) && !m_contactTouching[slot])
                 filter(slot, a, b, tests);
         }
         m_narrowLists[0].tested += collideTests(tests);
-        for (const uint32_t i : m_pushRaised)
-            m_pushMark[i] = 0;
     }
 
     // Then the new pairs are started and collided, each member taking an even part of them, and the touching

@@ -278,7 +278,7 @@ private:
     void findAndCollidePairs();
     // Sets every push speed to 0 (at the step's start: the pairs collided before the lists are committed take none).
     void clearPushSpeeds();
-    // The pushes of this step's new pairs, once the lists are committed; lists in m_pushRaised the bodies whose
+    // The pushes of this step's new pairs, once the lists are committed; lists in m_pushedBodies the bodies whose
     // push speed rose.
     void pushSpeedsOfNewPairs();
     // Whether a and b can strike each other in the step hard enough to matter (pushSpeedsOfNewPairs()).
@@ -485,8 +485,6 @@ private:
     std::vector<Real> m_pushSpeed;
     std::vector<uint32_t> m_pushedBodies;
     std::vector<std::pair<uint32_t, uint32_t>> m_pushPairs; // pushSpeedsOfNewPairs()'s scratch
-    std::vector<uint32_t> m_pushRaised;                     // bodies whose push speed the new pairs raised
-    std::vector<uint8_t> m_pushMark;                        // per body, while m_pushRaised is walked
     // Moving bodies whose proxy must be reinserted this step, with its new fat box (refreshTransforms()).
     std::vector<uint8_t> m_reinsert;
     std::vector<Aabb> m_fatBoxes;

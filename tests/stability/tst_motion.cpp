@@ -92,6 +92,26 @@ Real lowestPointOver(World& w, const std::vector<Vec3>& points, int frames, RunS
     return lowest;
 }
 
+// A box of a bouncing pile of 1,000 boxes (e = 0.5), captured in motion.
+BodyDef pileBox(const char* name, const Vec3& half, const Vec3& position, const Quat& orientation, const Vec3& velocity,
+                const Vec3& angularVelocity) {
+    BodyDef b = scenes::box(name, half, position, orientation);
+    b.restitution = 0.5;
+    b.velocity = velocity;
+    b.angularVelocity = angularVelocity;
+    return b;
+}
+
+// Steps two captured bodies, alone in a world, for 30 frames; prints the deepest contact.
+RunStats runCapturedPair(const BodyDef& first, const BodyDef& second) {
+    Scene s;
+    s.bodies = {first, second};
+    World w = makeWorld(s);
+    const RunStats stats = run(w, 30);
+    qInfo("deepest contact %.2f mm", 1e3 * stats.maxPenetration);
+    return stats;
+}
+
 } // namespace
 
 class TestMotion : public QObject {
@@ -698,27 +718,18 @@ private slots:
     void boxTurningOntoAnEdgeStaysOut() {
         QFETCH(bool, lowerAnchored);
         QFETCH(bool, upperFirst);
-        Scene s;
-        const auto box = [](const char* name, const Vec3& half, const Vec3& position, const Quat& orientation) {
-            BodyDef b = scenes::box(name, half, position, orientation);
-            b.restitution = 0.5;
-            return b;
-        };
-        BodyDef lower = box("Lower", Vec3(0.1144114, 0.1798666, 0.2911382), Vec3(-0.1000541, 0.6790972, 1.726555),
-                            Quat(0.9991274, -0.03169785, 0.0161626, 0.02187499));
-        lower.anchor = lowerAnchored;
-        if (!lowerAnchored) {
-            lower.velocity = Vec3(-1.023161, 0.4156233, 1.733776);
-            lower.angularVelocity = Vec3(4.647989, -0.8258891, -6.550461);
+        BodyDef lower = pileBox("Lower", Vec3(0.1144114, 0.1798666, 0.2911382), Vec3(-0.1000541, 0.6790972, 1.726555),
+                                Quat(0.9991274, -0.03169785, 0.0161626, 0.02187499),
+                                Vec3(-1.023161, 0.4156233, 1.733776), Vec3(4.647989, -0.8258891, -6.550461));
+        if (lowerAnchored) {
+            lower.anchor = true;
+            lower.velocity = lower.angularVelocity = Vec3(0.0);
         }
-        BodyDef upper = box("Upper", Vec3(0.2664861, 0.1367319, 0.1548344), Vec3(-0.006673311, 1.007107, 1.630036),
-                            Quat(0.9989611, 0.02567712, 0.0189, -0.0325596));
-        upper.velocity = Vec3(-0.45137, -3.054973, 0.4946377);
-        upper.angularVelocity = Vec3(-22.79873, 3.999188, -5.747068);
-        s.bodies = upperFirst ? std::vector<BodyDef>{upper, lower} : std::vector<BodyDef>{lower, upper};
-        World w = makeWorld(s);
-        const RunStats stats = run(w, 30);
-        qInfo("deepest contact %.2f mm", 1e3 * stats.maxPenetration);
+        const BodyDef upper =
+            pileBox("Upper", Vec3(0.2664861, 0.1367319, 0.1548344), Vec3(-0.006673311, 1.007107, 1.630036),
+                    Quat(0.9989611, 0.02567712, 0.0189, -0.0325596), Vec3(-0.45137, -3.054973, 0.4946377),
+                    Vec3(-22.79873, 3.999188, -5.747068));
+        const RunStats stats = upperFirst ? runCapturedPair(upper, lower) : runCapturedPair(lower, upper);
         QVERIFY(stats.allFinite);
         // The first step starts 6 mm deep (the edges' overlap).
         QVERIFY(stats.maxPenetration < 0.01);
@@ -730,24 +741,13 @@ private slots:
     // the corners a box's turn brings towards its neighbour added once they move more than 5 cm in the step
     // (WorldTuning::boxTurnCorner), 0.7 mm (2026-12-06). (With the lower box anchored, 42.5 mm either way: not yet.)
     void turningBoxesMeetCornerFirst() {
-        const auto box = [](const char* name, const Vec3& half, const Vec3& position, const Quat& orientation) {
-            BodyDef b = scenes::box(name, half, position, orientation);
-            b.restitution = 0.5;
-            return b;
-        };
-        BodyDef lower = box("Lower", Vec3(0.2035814, 0.2161822, 0.1927282), Vec3(2.860568, 2.223507, -3.971819),
-                            Quat(0.9605005, 0.0135724, 0.09993256, -0.2593608));
-        lower.velocity = Vec3(1.393733, -0.7981015, 0.2485836);
-        lower.angularVelocity = Vec3(-2.058577, 3.688754, -8.356362);
-        BodyDef upper = box("Upper", Vec3(0.1615028, 0.2549494, 0.2387746), Vec3(3.055979, 2.613092, -3.992078),
-                            Quat(0.8856193, -0.02701502, 0.1078326, 0.4509111));
-        upper.velocity = Vec3(-0.05725528, -2.812669, -0.2922887);
-        upper.angularVelocity = Vec3(-4.78871, 1.628526, 12.76246);
-        Scene s;
-        s.bodies = {lower, upper};
-        World w = makeWorld(s);
-        const RunStats stats = run(w, 30);
-        qInfo("deepest contact %.2f mm", 1e3 * stats.maxPenetration);
+        const RunStats stats =
+            runCapturedPair(pileBox("Lower", Vec3(0.2035814, 0.2161822, 0.1927282), Vec3(2.860568, 2.223507, -3.971819),
+                                    Quat(0.9605005, 0.0135724, 0.09993256, -0.2593608),
+                                    Vec3(1.393733, -0.7981015, 0.2485836), Vec3(-2.058577, 3.688754, -8.356362)),
+                            pileBox("Upper", Vec3(0.1615028, 0.2549494, 0.2387746), Vec3(3.055979, 2.613092, -3.992078),
+                                    Quat(0.8856193, -0.02701502, 0.1078326, 0.4509111),
+                                    Vec3(-0.05725528, -2.812669, -0.2922887), Vec3(-4.78871, 1.628526, 12.76246)));
         QVERIFY(stats.allFinite);
         // The first step starts 6.5 mm deep.
         QVERIFY(stats.maxPenetration < 0.01);

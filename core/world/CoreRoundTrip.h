@@ -2,7 +2,7 @@
 // two CPUs this thread may run on, pass a counter back and forth. On a shared virtual machine this time depends on
 // where the host runs the virtual CPUs, which the machine cannot see: on this project's two-core machine it was 50-64
 // ns for minutes at a time, then 310-400 ns for tens of seconds, and the two-thread bench of ramps.obj went from a
-// median 1.88x as fast as one thread to 1.45x (README, "Whole steps", 2026-12-04). A step on a team meets at barriers
+// median 1.88x as fast as one thread to 1.45x (tests/benchmarks/LOG.md, 2026-12-04). A step on a team meets at barriers
 // and hands bodies from core to core, so a benchmark that compares thread counts reports this time beside its figures.
 #pragma once
 

@@ -2,10 +2,11 @@
 // substeps, with the solver's copies of what they change, several bodies at a time in the lanes of one vector. Every
 // lane does what the scalar code does (symplecticVelocityPhase() and symplecticPositionPhase() in Integrator.cpp, the
 // motion since the step began), operation for operation in glm's order, so the numbers are the same to the bit: this
-// file is compiled without contracting a * b + c into fused multiply-adds (core/CMakeLists.txt). One lane at a time: a
-// body with the gyroscopic term takes the scalar velocity phase, a rotation over the substep too large for the series
-// of rotationFromVector() takes that function's sine and cosine, and an inverse inertia that is not isotropic takes
-// BodyState::worldInverseInertia().
+// file is compiled without contracting a * b + c into fused multiply-adds (core/CMakeLists.txt). The gyroscopic term's
+// Newton iterations run in the lanes too, each lane stopping where the scalar loop stops. One lane at a time: a body
+// that does not move takes the scalar velocity phase (which leaves it as it is), a rotation over the substep too large
+// for the series of rotationFromVector() takes that function's sine and cosine, and a round body takes
+// BodyState::anchorTurn().
 #include "dynamics/Gyroscopic.h"
 #include "dynamics/Integrator.h"
 
@@ -161,6 +162,36 @@ RL_LANES_INLINE void positionsForSolverLanes(BodyState& state, const uint32_t* i
     const V m00 = one - two * (yy + zz), m01 = two * (xy + wzp), m02 = two * (xz - wyp);
     const V m10 = two * (xy - wzp), m11 = one - two * (xx + zz), m12 = two * (yz + wxp);
     const V m20 = two * (xz + wyp), m21 = two * (yz - wxp), m22 = one - two * (xx + yy);
+    // The world inverse inertia R D R^T at the pose just reached, in the lanes whose three moments differ:
+    // BodyState::worldInverseInertia(), entry for entry in its order, with R = mat3_cast(q). (One lane at a time,
+    // it was 2 % of the step of boxes1000's random boxes, 2026-12-06.)
+    bool full[W];
+    bool anyFull = false;
+    V dx, dy, dz;
+    for (int l = 0; l < W; ++l) {
+        const uint32_t k = ids[l];
+        setLane(dx, dy, dz, l, state.invInertia[k]);
+        full[l] = rotationEnabled && !solver[k + 1].isotropic && !state.hasIsotropicInverseInertia(k);
+        anyFull = anyFull || full[l];
+    }
+    V i00 = zero, i01 = zero, i02 = zero, i11 = zero, i12 = zero, i22 = zero;
+    if (anyFull) {
+        const V qxx = q.x * q.x, qyy = q.y * q.y, qzz = q.z * q.z;
+        const V qxz = q.x * q.z, qxy = q.x * q.y, qyz = q.y * q.z;
+        const V qwx = q.w * q.x, qwy = q.w * q.y, qwz = q.w * q.z;
+        const V a[3][3] = {{one - two * (qyy + qzz), two * (qxy + qwz), two * (qxz - qwy)},
+                           {two * (qxy - qwz), one - two * (qxx + qzz), two * (qyz + qwx)},
+                           {two * (qxz + qwy), two * (qyz - qwx), one - two * (qxx + qyy)}};
+        const auto entry = [&](int col, int row) {
+            return a[0][row] * dx * a[0][col] + a[1][row] * dy * a[1][col] + a[2][row] * dz * a[2][col];
+        };
+        i00 = entry(0, 0);
+        i01 = entry(0, 1);
+        i02 = entry(0, 2);
+        i11 = entry(1, 1);
+        i12 = entry(1, 2);
+        i22 = entry(2, 2);
+    }
     for (int l = 0; l < W; ++l) {
         const uint32_t k = ids[l];
         SolverBody& s = solver[k + 1];
@@ -173,27 +204,121 @@ RL_LANES_INLINE void positionsForSolverLanes(BodyState& state, const uint32_t* i
         s.dp = state.position[k] - startPosition[k];
         s.dR = state.isRound(k) ? state.anchorTurn(k, startOrientation[k])
                                 : Mat3(m00[l], m01[l], m02[l], m10[l], m11[l], m12[l], m20[l], m21[l], m22[l]);
-        if (rotationEnabled) // (what worldInverseInertia() gives an isotropic body, without the call)
+        if (full[l])
+            s.invInertia = Mat3(i00[l], i01[l], i02[l], i01[l], i11[l], i12[l], i02[l], i12[l], i22[l]);
+        else if (rotationEnabled) // (what worldInverseInertia() gives an isotropic body, without the call)
             s.invInertia = s.isotropic ? Mat3(state.invInertia[k].x) : state.worldInverseInertia(k);
     }
 }
 
-// symplecticVelocityPhase() (Integrator.cpp) in every lane whose body moves and turns without the gyroscopic term:
-// v = (v + g dt) / (1 + c dt) and w = w / (1 + c_w dt), then the speed clamp where a lane may need it (one lane at a
-// time, with clampSpeeds() itself). A moving body with the gyroscopic term takes the scalar phase. Then every listed
-// body's velocities go to the solver.
+// A vector with W lanes per component.
+template <class V>
+struct Vec3L {
+    V x, y, z;
+};
+
+// glm::cross(a, b), per lane.
+template <class V>
+RL_LANES_INLINE Vec3L<V> cross(const Vec3L<V>& a, const Vec3L<V>& b) {
+    return {a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
+}
+
+// glm's q * v (qua::operator*(qua, vec3)): v + ((u x v) w + u x (u x v)) 2 with u = (q.x, q.y, q.z), per lane.
+template <class V>
+RL_LANES_INLINE Vec3L<V> rotate(const QuatL<V>& q, const Vec3L<V>& v) {
+    const Vec3L<V> u{q.x, q.y, q.z};
+    const Vec3L<V> uv = cross(u, v);
+    const Vec3L<V> uuv = cross(u, uv);
+    return {v.x + (uv.x * q.w + uuv.x) * 2.0, v.y + (uv.y * q.w + uuv.y) * 2.0, v.z + (uv.z * q.w + uuv.z) * 2.0};
+}
+
+// glm::length(v), per lane: the square root of glm's dot, (x x + y y) + z z.
+template <int W, class V>
+RL_LANES_INLINE V length(const Vec3L<V>& v) {
+    const V squared = (v.x * v.x + v.y * v.y) + v.z * v.z;
+    V root;
+    for (int l = 0; l < W; ++l)
+        root[l] = std::sqrt(squared[l]);
+    return root;
+}
+
+// gyroscopicMidpoint() (Gyroscopic.cpp) in the lanes where `active` is set, operation for operation: Newton's
+// iterations on the implicit midpoint, each lane stopping after the iteration where the scalar loop stops (a lane
+// that has stopped keeps its value while the others go on), then 2 wm - w0. Other lanes' results are not used.
+template <int W, class V, class Mask>
+RL_LANES_INLINE Vec3L<V> gyroscopicMidpointLanes(const Vec3L<V>& w0, const Vec3L<V>& inertia, Real dt, Mask active) {
+    const Real h = 0.5 * dt;
+    const V largest = inertia.x > inertia.y ? inertia.x : inertia.y,
+            smallest = inertia.x < inertia.y ? inertia.x : inertia.y;
+    const V anisotropy = (largest > inertia.z ? largest : inertia.z) / (smallest < inertia.z ? smallest : inertia.z);
+    const V zero = V{};
+    Vec3L<V> mid = w0;
+    for (int k = 0; k < kMidpointMaxIterations; ++k) {
+        bool any = false;
+        for (int l = 0; l < W; ++l)
+            any = any || active[l];
+        if (!any)
+            break;
+        // backwardEulerNewtonStep(w0, mid, inertia, h).
+        const Vec3L<V> momentum{inertia.x * mid.x, inertia.y * mid.y, inertia.z * mid.z};
+        const Vec3L<V> turn = cross(mid, momentum);
+        const Vec3L<V> residual{inertia.x * (mid.x - w0.x) + h * turn.x, inertia.y * (mid.y - w0.y) + h * turn.y,
+                                inertia.z * (mid.z - w0.z) + h * turn.z};
+        const Vec3L<V> hw{h * mid.x, h * mid.y, h * mid.z};
+        const Vec3L<V> r0{inertia.x, hw.z * (inertia.z - inertia.y), hw.y * (inertia.z - inertia.y)};
+        const Vec3L<V> r1{hw.z * (inertia.x - inertia.z), inertia.y, hw.x * (inertia.x - inertia.z)};
+        const Vec3L<V> r2{hw.y * (inertia.y - inertia.x), hw.x * (inertia.y - inertia.x), inertia.z};
+        const Vec3L<V> c0 = cross(r1, r2), c1 = cross(r2, r0), c2 = cross(r0, r1);
+        const V det = (r0.x * c0.x + r0.y * c0.y) + r0.z * c0.z;
+        Mask solvable = active;
+        for (int l = 0; l < W; ++l)
+            solvable[l] = active[l] && std::isfinite(det[l]) && !(std::abs(det[l]) < 1e-300) ? -1 : 0;
+        const Vec3L<V> update{((c0.x * residual.x + c1.x * residual.y) + c2.x * residual.z) / det,
+                              ((c0.y * residual.x + c1.y * residual.y) + c2.y * residual.z) / det,
+                              ((c0.z * residual.x + c1.z * residual.y) + c2.z * residual.z) / det};
+        mid = {solvable ? mid.x - update.x : mid.x, solvable ? mid.y - update.y : mid.y,
+               solvable ? mid.z - update.z : mid.z};
+        // The scalar loop's two tests on the update's size (zero where the step was not solvable).
+        const V change = solvable ? length<W>(update) : zero;
+        const V size = length<W>(mid);
+        const V relative = change / size;
+        const auto goesOn = (change > 1e-14 * size) & ~(h * size * anisotropy * relative * relative <= 1e-15);
+        active = active & goesOn;
+    }
+    return {2.0 * mid.x - w0.x, 2.0 * mid.y - w0.y, 2.0 * mid.z - w0.z};
+}
+
+// symplecticVelocityPhase() (Integrator.cpp) in every lane whose body moves: v = (v + g dt) / (1 + c dt), then
+// w = w / (1 + c_w dt) for a body with three equal moments, or the gyroscopic step in its own frame,
+// w = q (gyroscopicMidpoint(q* w) / (1 + c_w dt)); then the speed clamp where a lane may need it (one lane at a
+// time, with clampSpeeds() itself). Then every listed body's velocities go to the solver. (Before 2026-12-06 a body
+// with the gyroscopic term took the scalar phase: boxes1000's random boxes spent 13 % of the step there.)
 template <int W>
 RL_LANES_INLINE void velocitiesForSolverLanes(BodyState& state, const uint32_t* ids, Real dt, const Vec3& gravity,
                                               const Damping& damping, bool rotationEnabled,
                                               ClampCounters& clampCounters, std::span<SolverBody> solver) {
     using V = typename Lanes<W>::V;
     V vx, vy, vz, wx, wy, wz, linear, angular;
+    Vec3L<V> inertia;
+    QuatL<V> q;
     bool lane[W];
+    bool anyGyroscopic = false;
+    const V zero = V{};
+    auto gyroscopic = zero > zero; // the lanes with the gyroscopic term
     for (int l = 0; l < W; ++l) {
         const uint32_t k = ids[l];
-        lane[l] = state.isMoving(k) && (!rotationEnabled || detail::isotropicMoments(state.info[k].principalMoments));
+        lane[l] = state.isMoving(k);
+        const Vec3& moments = state.info[k].principalMoments;
+        gyroscopic[l] = lane[l] && rotationEnabled && !detail::isotropicMoments(moments) ? -1 : 0;
+        anyGyroscopic = anyGyroscopic || gyroscopic[l];
         setLane(vx, vy, vz, l, state.linearVelocity[k]);
         setLane(wx, wy, wz, l, state.angularVelocity[k]);
+        setLane(inertia.x, inertia.y, inertia.z, l, moments);
+        const Quat& o = state.orientation[k];
+        q.w[l] = o.w;
+        q.x[l] = o.x;
+        q.y[l] = o.y;
+        q.z[l] = o.z;
         linear[l] = damping.linear + state.linearDamping[k];
         angular[l] = damping.angular + state.angularDamping[k];
     }
@@ -204,9 +329,20 @@ RL_LANES_INLINE void velocitiesForSolverLanes(BodyState& state, const uint32_t* 
     vz = (vz + kick.z) * decay;
     if (rotationEnabled) {
         const V turnDecay = 1.0 / (1.0 + angular * dt);
-        wx = wx * turnDecay;
-        wy = wy * turnDecay;
-        wz = wz * turnDecay;
+        Vec3L<V> turned{wx * turnDecay, wy * turnDecay, wz * turnDecay};
+        if (anyGyroscopic) {
+            // The body frame's w by the conjugate of q, the midpoint step there, the decay, and back.
+            const QuatL<V> inverse{q.w, -q.x, -q.y, -q.z};
+            const Vec3L<V> bodyW = rotate(inverse, Vec3L<V>{wx, wy, wz});
+            const Vec3L<V> stepped = gyroscopicMidpointLanes<W>(bodyW, inertia, dt, gyroscopic);
+            const Vec3L<V> world =
+                rotate(q, Vec3L<V>{stepped.x * turnDecay, stepped.y * turnDecay, stepped.z * turnDecay});
+            turned = {gyroscopic ? world.x : turned.x, gyroscopic ? world.y : turned.y,
+                      gyroscopic ? world.z : turned.z};
+        }
+        wx = turned.x;
+        wy = turned.y;
+        wz = turned.z;
     }
     // glm::length()'s squares; the clamp compares the square roots, as clampSpeeds() does.
     const V speed2 = (vx * vx + vy * vy) + vz * vz, spin2 = (wx * wx + wy * wy) + wz * wz;

@@ -313,15 +313,19 @@ RL_LANES_INLINE void velocitiesForSolverLanes(BodyState& state, const uint32_t* 
         anyGyroscopic = anyGyroscopic || gyroscopic[l];
         setLane(vx, vy, vz, l, state.linearVelocity[k]);
         setLane(wx, wy, wz, l, state.angularVelocity[k]);
-        setLane(inertia.x, inertia.y, inertia.z, l, moments);
-        const Quat& o = state.orientation[k];
-        q.w[l] = o.w;
-        q.x[l] = o.x;
-        q.y[l] = o.y;
-        q.z[l] = o.z;
         linear[l] = damping.linear + state.linearDamping[k];
         angular[l] = damping.angular + state.angularDamping[k];
     }
+    if (anyGyroscopic) // (a scene of cubes and balls has none)
+        for (int l = 0; l < W; ++l) {
+            const uint32_t k = ids[l];
+            setLane(inertia.x, inertia.y, inertia.z, l, state.info[k].principalMoments);
+            const Quat& o = state.orientation[k];
+            q.w[l] = o.w;
+            q.x[l] = o.x;
+            q.y[l] = o.y;
+            q.z[l] = o.z;
+        }
     const Vec3 kick = gravity * dt;
     const V decay = 1.0 / (1.0 + linear * dt); // detail::implicitDecay()
     vx = (vx + kick.x) * decay;

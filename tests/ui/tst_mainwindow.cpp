@@ -12,6 +12,7 @@
 #include <QIcon>
 #include <QImage>
 #include <QLineEdit>
+#include <QLineF>
 #include <QMessageBox>
 #include <QSurfaceFormat>
 #include <QTest>
@@ -117,6 +118,34 @@ private slots:
                                                             QItemSelectionModel::Rows);
         QCOMPARE(window.selectedBodies(), QList<int>{3});
         QCOMPARE(viewport->selection(), QList<int>{3});
+    }
+
+    // Opening a scene frames its bodies, not a ground that dwarfs them (ViewportScene::contentBounds()): a 0.1 m shot
+    // 5 m from a 4 m wall on a 400 m floor. Framed whole (Home), the two are a few pixels apart.
+    void openingFramesTheBodiesNotTheGround() {
+        rl::MainWindow window;
+        window.resize(1200, 800);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(QStringLiteral(RL_SOURCE_DIR "/tests/data/acceptance/projectile_wall.rlscene")));
+        rl::Viewport* viewport = window.viewport();
+        QCOMPARE(QString::fromStdString(window.document()->body(1).name), QStringLiteral("Wall"));
+        QCOMPARE(QString::fromStdString(window.document()->body(2).name), QStringLiteral("Bullet"));
+        const auto pixelOf = [&](const glm::vec3& p) {
+            const glm::vec3 q = viewport->camera().project(p);
+            return QPointF(q.x, q.y);
+        };
+        const glm::vec3 wall(5.0f, 2.0f, 0.0f), shot(0.0f, 1.0f, 0.0f);
+        const QRectF screen(0.0, 0.0, viewport->width(), viewport->height());
+        QVERIFY(screen.contains(pixelOf(wall)));
+        QVERIFY(screen.contains(pixelOf(shot)));
+        const qreal apart = QLineF(pixelOf(wall), pixelOf(shot)).length();
+        qInfo("wall and shot %.0f px apart on opening", apart);
+        QVERIFY(apart > 0.2 * viewport->width());
+        viewport->frameAll();
+        const qreal apartWhole = QLineF(pixelOf(wall), pixelOf(shot)).length();
+        qInfo("and %.0f px apart framed whole", apartWhole);
+        QVERIFY(apartWhole < 0.05 * viewport->width());
     }
 
     // The sample scene renders: the viewport's pixels are not blank and the outliner shows every body.

@@ -281,7 +281,7 @@ bool FileController::openScene(const QString& path) {
     // The autosaved copy held changes the user has just chosen to leave.
     m_recovery->remove();
     m_changedSinceAutosave = false;
-    m_window->viewport()->frameAll();
+    m_window->viewport()->frameContents();
     showStatus(tr("Opened %1: %n bodies", "", document->bodyCount()).arg(fileName(path)));
     return true;
 }
@@ -577,7 +577,7 @@ bool FileController::offerRecovery() {
     m_changedSinceAutosave = true;
     if (autosave())
         RecoveryStore::discard(*orphan);
-    m_window->viewport()->frameAll();
+    m_window->viewport()->frameContents();
     showStatus(tr("Restored unsaved changes to %1").arg(name));
     return true;
 }

@@ -799,7 +799,7 @@ bool SimulationController::openBake(const QString& path) {
     m_lastBakeFrames = static_cast<int>(shared->frameCount()) - 1;
     m_lastBakeStart = static_cast<int>(shared->simulationStart());
     setBake(shared, false);
-    m_window->viewport()->frameAll();
+    m_window->viewport()->frameContents();
     QString message = tr("Opened %1: frames 0 to %2 at %3 Hz, %n bodies.", "", static_cast<int>(shared->bodyCount()))
                           .arg(name)
                           .arg(shared->frameCount() - 1)

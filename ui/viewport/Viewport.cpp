@@ -371,6 +371,17 @@ void Viewport::frameAll() {
     cameraMoved();
 }
 
+void Viewport::frameContents() {
+    m_camera.setViewportSize(width(), height());
+    const Bounds content = m_scene.contentBounds();
+    if (content.isEmpty()) {
+        frameAll();
+        return;
+    }
+    m_camera.frame(content);
+    cameraMoved();
+}
+
 void Viewport::frameSelection() {
     m_camera.setViewportSize(width(), height());
     const Bounds selected = m_scene.bounds(true);

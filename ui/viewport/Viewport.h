@@ -83,7 +83,10 @@ public:
 
     Camera& camera() { return m_camera; }
     const Camera& camera() const { return m_camera; }
-    void frameAll();       // Home
+    void frameAll(); // Home
+    // The bodies of the scene, leaving out a ground that dwarfs them (ViewportScene::contentBounds()); everything
+    // where that leaves nothing. Opening a scene or a bake frames this.
+    void frameContents();
     void frameSelection(); // F or numpad '.'; everything when nothing is selected
 
     const RenderOptions& renderOptions() const { return m_options; }

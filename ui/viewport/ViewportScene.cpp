@@ -3,6 +3,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rl {
@@ -54,6 +55,49 @@ Bounds ViewportScene::bounds(bool selectedOnly) const {
         }
     }
     return all;
+}
+
+Bounds ViewportScene::contentBounds() const {
+    // Mesh boxes once, as in bounds().
+    std::vector<Bounds> meshBounds(meshes.size());
+    for (size_t m = 0; m < meshes.size(); ++m)
+        meshBounds[m] = meshes[m].bounds();
+    const auto worldBounds = [&](const ViewportInstance& inst) {
+        Bounds world;
+        const Bounds& local = meshBounds[static_cast<size_t>(inst.meshIndex)];
+        if (local.isEmpty())
+            return world;
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
+                              (corner & 4) ? local.max.z : local.min.z);
+            world.extend(glm::vec3(inst.model * glm::vec4(p, 1.0f)));
+        }
+        return world;
+    };
+    const auto diagonal = [](const Bounds& b) { return glm::length(b.size()); };
+    std::vector<Bounds> each;
+    each.reserve(instances.size());
+    size_t ground = instances.size(); // the largest anchor's place in `each`, if any
+    for (const ViewportInstance& inst : instances) {
+        if ((inst.flags & kInstanceHidden) || inst.meshIndex < 0 || inst.meshIndex >= static_cast<int>(meshes.size()))
+            continue;
+        const Bounds b = worldBounds(inst);
+        if (b.isEmpty())
+            continue;
+        if ((inst.flags & kInstanceAnchor) && (ground == instances.size() || diagonal(b) > diagonal(each[ground])))
+            ground = each.size();
+        each.push_back(b);
+    }
+    Bounds rest, all;
+    for (size_t k = 0; k < each.size(); ++k) {
+        all.extend(each[k]);
+        if (k != ground)
+            rest.extend(each[k]);
+    }
+    if (ground == instances.size() || rest.isEmpty() || !(diagonal(each[ground]) > kGroundRatio * diagonal(rest)) ||
+        each[ground].max.y > rest.min.y + 1e-3f * diagonal(rest))
+        return all;
+    return rest;
 }
 
 int ViewportScene::pickBounds(const ViewRay& ray) const {

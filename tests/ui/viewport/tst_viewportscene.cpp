@@ -39,6 +39,8 @@ private slots:
     void instanceTransformAppliesShapeFrameThenRotationThenPosition();
     void instanceBoundsFollowTheModel();
     void sceneBoundsSkipHiddenAndCanTakeTheSelection();
+    void contentLeavesOutAGroundThatDwarfsTheRest_data();
+    void contentLeavesOutAGroundThatDwarfsTheRest();
     void pickBoundsReturnsTheNearestHit();
     void rayBoundsSlabTest();
 };
@@ -149,6 +151,47 @@ void TestViewportScene::sceneBoundsSkipHiddenAndCanTakeTheSelection() {
     QCOMPARE(scene.bounds(true).min.x, 9.5f);
     scene.instances[1].flags = 0;
     QVERIFY(scene.bounds(true).isEmpty());
+}
+
+void TestViewportScene::contentLeavesOutAGroundThatDwarfsTheRest_data() {
+    QTest::addColumn<float>("groundHalfWidth");
+    QTest::addColumn<bool>("withWall");
+    QTest::addColumn<float>("expectedMaxX"); // of the content's bounds
+    // A 0.1 m cube on an anchored ground slab 2 cm thick, and (optionally) a 4 m anchored wall 5 m away on it.
+    QTest::newRow("a 40 m ground under a cube: the cube") << 20.0f << false << 0.05f;
+    QTest::newRow("a 400 m ground under a cube and a wall: both, the wall too") << 200.0f << true << 5.025f;
+    QTest::newRow("a 20 m ground under the cube and the wall: all") << 10.0f << true << 10.0f;
+    QTest::newRow("a 0.3 m ground under the cube: all") << 0.15f << false << 0.15f;
+}
+
+void TestViewportScene::contentLeavesOutAGroundThatDwarfsTheRest() {
+    QFETCH(float, groundHalfWidth);
+    QFETCH(bool, withWall);
+    QFETCH(float, expectedMaxX);
+    rl::ViewportScene scene;
+    const auto add = [&scene](const glm::vec3& half, const glm::vec3& centre, uint32_t flags) {
+        scene.meshes.push_back(rl::makeViewportBoxMesh(half));
+        rl::ViewportInstance inst;
+        inst.meshIndex = static_cast<int>(scene.meshes.size()) - 1;
+        inst.model = glm::translate(glm::mat4(1.0f), centre);
+        inst.flags = flags;
+        scene.instances.push_back(inst);
+    };
+    QVERIFY(scene.contentBounds().isEmpty());
+    add(glm::vec3(groundHalfWidth, 0.01f, groundHalfWidth), glm::vec3(0.0f, -0.01f, 0.0f), rl::kInstanceAnchor);
+    QCOMPARE(scene.contentBounds().max.x, groundHalfWidth); // the ground alone is what there is
+    add(glm::vec3(0.05f), glm::vec3(0.0f, 0.05f, 0.0f), 0);
+    if (withWall)
+        add(glm::vec3(0.025f, 2.0f, 2.0f), glm::vec3(5.0f, 2.0f, 0.0f), rl::kInstanceAnchor);
+    const rl::Bounds content = scene.contentBounds();
+    QCOMPARE(content.max.x, expectedMaxX);
+    // A hidden ground counts for nothing, as in bounds(); the wall, beside the cube and not under it, stays.
+    scene.instances[0].flags |= rl::kInstanceHidden;
+    QCOMPARE(scene.contentBounds().max.x, withWall ? 5.025f : 0.05f);
+    // A ground that is not under the rest is not a ground: raised above the cube, it is kept.
+    scene.instances[0].flags = rl::kInstanceAnchor;
+    scene.instances[0].model = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 10.0f, 0.0f));
+    QCOMPARE(scene.contentBounds().max.x, groundHalfWidth);
 }
 
 void TestViewportScene::pickBoundsReturnsTheNearestHit() {

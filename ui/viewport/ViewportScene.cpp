@@ -15,65 +15,56 @@ Bounds ViewportMesh::bounds() const {
     return b;
 }
 
-Bounds ViewportScene::instanceBounds(int instance) const {
+namespace {
+
+// The eight corners of a local box, transformed: exact for the box, conservative for the mesh in it. Empty for an
+// empty box.
+Bounds transformedBox(const Bounds& local, const glm::mat4& model) {
     Bounds world;
-    if (instance < 0 || instance >= static_cast<int>(instances.size()))
-        return world;
-    const ViewportInstance& inst = instances[instance];
-    if (inst.meshIndex < 0 || inst.meshIndex >= static_cast<int>(meshes.size()))
-        return world;
-    const Bounds local = meshes[inst.meshIndex].bounds();
     if (local.isEmpty())
         return world;
-    // The eight corners of the local box, transformed: exact for the box, conservative for the mesh.
     for (int corner = 0; corner < 8; ++corner) {
         const glm::vec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
                           (corner & 4) ? local.max.z : local.min.z);
-        world.extend(glm::vec3(inst.model * glm::vec4(p, 1.0f)));
+        world.extend(glm::vec3(model * glm::vec4(p, 1.0f)));
     }
     return world;
 }
 
-Bounds ViewportScene::bounds(bool selectedOnly) const {
-    // Mesh boxes are computed once here rather than per instance: 5,000 instances often share one mesh.
-    std::vector<Bounds> meshBounds(meshes.size());
+// Each mesh's box, once: 5,000 instances often share one mesh.
+std::vector<Bounds> meshBoxes(const std::vector<ViewportMesh>& meshes) {
+    std::vector<Bounds> boxes(meshes.size());
     for (size_t m = 0; m < meshes.size(); ++m)
-        meshBounds[m] = meshes[m].bounds();
+        boxes[m] = meshes[m].bounds();
+    return boxes;
+}
+
+} // namespace
+
+Bounds ViewportScene::instanceBounds(int instance) const {
+    if (instance < 0 || instance >= static_cast<int>(instances.size()))
+        return Bounds{};
+    const ViewportInstance& inst = instances[instance];
+    if (inst.meshIndex < 0 || inst.meshIndex >= static_cast<int>(meshes.size()))
+        return Bounds{};
+    return transformedBox(meshes[inst.meshIndex].bounds(), inst.model);
+}
+
+Bounds ViewportScene::bounds(bool selectedOnly) const {
+    const std::vector<Bounds> boxes = meshBoxes(meshes);
     Bounds all;
     for (const ViewportInstance& inst : instances) {
         if ((inst.flags & kInstanceHidden) || (selectedOnly && !(inst.flags & kInstanceSelected)))
             continue;
         if (inst.meshIndex < 0 || inst.meshIndex >= static_cast<int>(meshes.size()))
             continue;
-        const Bounds& local = meshBounds[inst.meshIndex];
-        if (local.isEmpty())
-            continue;
-        for (int corner = 0; corner < 8; ++corner) {
-            const glm::vec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
-                              (corner & 4) ? local.max.z : local.min.z);
-            all.extend(glm::vec3(inst.model * glm::vec4(p, 1.0f)));
-        }
+        all.extend(transformedBox(boxes[inst.meshIndex], inst.model));
     }
     return all;
 }
 
 Bounds ViewportScene::contentBounds() const {
-    // Mesh boxes once, as in bounds().
-    std::vector<Bounds> meshBounds(meshes.size());
-    for (size_t m = 0; m < meshes.size(); ++m)
-        meshBounds[m] = meshes[m].bounds();
-    const auto worldBounds = [&](const ViewportInstance& inst) {
-        Bounds world;
-        const Bounds& local = meshBounds[static_cast<size_t>(inst.meshIndex)];
-        if (local.isEmpty())
-            return world;
-        for (int corner = 0; corner < 8; ++corner) {
-            const glm::vec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
-                              (corner & 4) ? local.max.z : local.min.z);
-            world.extend(glm::vec3(inst.model * glm::vec4(p, 1.0f)));
-        }
-        return world;
-    };
+    const std::vector<Bounds> boxes = meshBoxes(meshes);
     const auto diagonal = [](const Bounds& b) { return glm::length(b.size()); };
     std::vector<Bounds> each;
     each.reserve(instances.size());
@@ -81,7 +72,7 @@ Bounds ViewportScene::contentBounds() const {
     for (const ViewportInstance& inst : instances) {
         if ((inst.flags & kInstanceHidden) || inst.meshIndex < 0 || inst.meshIndex >= static_cast<int>(meshes.size()))
             continue;
-        const Bounds b = worldBounds(inst);
+        const Bounds b = transformedBox(boxes[inst.meshIndex], inst.model);
         if (b.isEmpty())
             continue;
         if ((inst.flags & kInstanceAnchor) && (ground == instances.size() || diagonal(b) > diagonal(each[ground])))

@@ -36,6 +36,12 @@ inline Real horizontal(const Vec3& a, const Vec3& b) {
     return std::hypot(a.x - b.x, a.z - b.z);
 }
 
+// Kinetic plus potential energy of the dynamic bodies (J), as the world reports them.
+inline Real totalEnergy(const World& w) {
+    const FrameDiagnostics d = w.diagnostics();
+    return d.kineticEnergy + d.potentialEnergy;
+}
+
 struct RunStats {
     Real maxSpeedLastSecond = 0.0; // linear speed of any dynamic body in the last second
     Real maxPenetration = 0.0;     // deepest contact seen in the run

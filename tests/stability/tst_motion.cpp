@@ -401,10 +401,7 @@ private slots:
             for (BodyDef& b : scene->bodies)
                 b.restitution = e;
         World w = makeWorld(*scene);
-        const auto energy = [&] {
-            const FrameDiagnostics d = w.diagnostics();
-            return d.kineticEnergy + d.potentialEnergy;
-        };
+        const auto energy = [&w] { return totalEnergy(w); };
         const Real start = energy();
         Real highest = start;
         const RunStats stats = run(w, 120, [&](int) { highest = std::max(highest, energy()); });
@@ -793,10 +790,7 @@ private slots:
         QFETCH(Real, mu);
         QFETCH(Real, e);
         World w = makeWorld(dominoRow(30, spacing, mu, e));
-        const auto energy = [&w] {
-            const FrameDiagnostics d = w.diagnostics();
-            return d.kineticEnergy + d.potentialEnergy;
-        };
+        const auto energy = [&w] { return totalEnergy(w); };
         const Real start = energy();
         Real most = start;
         const RunStats stats = run(w, 600, [&](int) { most = std::max(most, energy()); });
@@ -1039,10 +1033,7 @@ private slots:
 
     void busySceneTenMinutes() {
         World w = makeWorld(scenes::busy());
-        const auto energy = [&] {
-            const FrameDiagnostics d = w.diagnostics();
-            return d.kineticEnergy + d.potentialEnergy;
-        };
+        const auto energy = [&w] { return totalEnergy(w); };
         const Real start = energy();
         Real highest = start;
         const RunStats stats = run(w, 36000, [&](int) { highest = std::max(highest, energy()); });

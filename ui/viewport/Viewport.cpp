@@ -361,35 +361,29 @@ void Viewport::setInstanceAppearance(int instance, const glm::vec3& colour, uint
 }
 
 void Viewport::frameAll() {
-    m_camera.setViewportSize(width(), height()); // framing may come before the first resizeGL
     Bounds all = m_scene.bounds();
     if (all.isEmpty()) {
         all.extend(glm::vec3(-5.0f, 0.0f, -5.0f)); // an empty scene shows a patch of the grid
         all.extend(glm::vec3(5.0f, 0.0f, 5.0f));
     }
-    m_camera.frame(all);
-    cameraMoved();
+    frameBounds(all);
 }
 
 void Viewport::frameContents() {
-    m_camera.setViewportSize(width(), height());
-    const Bounds content = m_scene.contentBounds();
-    if (content.isEmpty()) {
-        frameAll();
-        return;
-    }
-    m_camera.frame(content);
-    cameraMoved();
+    frameBounds(m_scene.contentBounds());
 }
 
 void Viewport::frameSelection() {
-    m_camera.setViewportSize(width(), height());
-    const Bounds selected = m_scene.bounds(true);
-    if (selected.isEmpty()) {
+    frameBounds(m_scene.bounds(true));
+}
+
+void Viewport::frameBounds(const Bounds& box) {
+    if (box.isEmpty()) {
         frameAll();
         return;
     }
-    m_camera.frame(selected);
+    m_camera.setViewportSize(width(), height()); // framing may come before the first resizeGL
+    m_camera.frame(box);
     cameraMoved();
 }
 

@@ -163,6 +163,8 @@ protected:
     void leaveEvent(QEvent* event) override;
 
 private:
+    // Frames `box`, or everything where it is empty.
+    void frameBounds(const Bounds& box);
     enum class Drag { None, Orbit, Pan, Zoom, PendingClick, BoxSelect, Gizmo, Modal };
     friend class ViewportWindow; // renders on expose
 

@@ -188,7 +188,7 @@ bool runWorld(World& world, int frames, const QString& label, bool quiet, FrameT
     out.solveMs =
         groupMs(p, {Stage::BuildIslands, Stage::PrepareContacts, Stage::IntegrateVelocities, Stage::WarmStart,
                     Stage::Solve, Stage::IntegratePositions, Stage::Relax, Stage::Restitution, Stage::StoreImpulses});
-    out.otherMs = groupMs(p, {Stage::PushOut, Stage::Ccd, Stage::Sleep, Stage::StoreFrame});
+    out.otherMs = groupMs(p, {Stage::PushOut, Stage::Ccd, Stage::Separate, Stage::Sleep, Stage::StoreFrame});
 
     for (size_t i = 0; i < world.bodyCount(); ++i) {
         const Vec3 c = world.centerOfMass(i);

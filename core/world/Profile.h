@@ -25,6 +25,7 @@ enum class Stage {
     StoreImpulses, // velocities, positions and accumulated impulses back to the bodies and manifolds
     PushOut,       // bodies the step took into anchors and sleepers moved out (World::pushOutOfContacts())
     Ccd,
+    Separate, // contacts the step's turns took deeper collided again and pushed apart (World::separateMovedPairs())
     Sleep,
     StoreFrame,
     Count
@@ -56,6 +57,7 @@ enum class Counter {
     IslandsInBodyOrder, // of IslandsSharedOut, the solves whose islands went to the members in runs of body order
     PushedContacts,     // contacts whose points World::pushOutOfContacts() moved a body out of
     BoundedBounces,     // bounces the restitution pass took back to the energy of free flight (ContactSolver::launch())
+    SeparatedPairs,     // pushes World::separateMovedPairs() made (a pair takes at most two a step)
     Count
 };
 inline constexpr int kCounterCount = static_cast<int>(Counter::Count);

@@ -102,6 +102,14 @@ struct WorldTuning {
     // took ramps.obj's first 120 frames 2.9-3.0 ms (of the 226-228 ms of all its stages) and pushed 54 contacts
     // (2026-12-05).
     Real pushOutSlop = 0.002;
+    // After CCD, a contact whose bodies' turns moved a point by more than separateTurn (m) in the step is collided
+    // again where the step left it, and pushed apart to separateSlop (m) where the step took it deeper than that
+    // (World::separateMovedPairs()); one that began the step deeper than separateDeepStart (m; bodies created
+    // overlapping) only where the step took it deeper than it began, by separateSlop. Negative separateSlop: never.
+    // Measured 2026-12-06 (separateMovedPairs() says what).
+    Real separateSlop = 0.002;
+    Real separateTurn = 0.005;
+    Real separateDeepStart = 0.01;
     // A lower body whose surface moves into the upper one faster than this (m/s) is not held (World::contactHold()).
     Real holdRiseSpeed = 3.0;
     // A hull whose faces are all at least this fraction of its farthest corner's distance from the centre of mass (a
@@ -414,6 +422,16 @@ private:
     // Marks the round hulls that turn through a face or more in this step round (kBodyRound), the others not.
     void updateRoundHulls();
     void pushOutOfContacts(Real slop);
+    void separateMovedPairs(Real slop);
+    // Whether the contact's bodies turned fast in the step (WorldTuning::separateTurn) and, collided again, have a
+    // point deeper than separationFloor() (separateMovedPairs()); reads the state only.
+    bool movedInto(uint32_t slot, Real slop) const;
+    // How deep (negative) a contact may be after the step: -slop, or for one that began the step deeper than
+    // WorldTuning::separateDeepStart, its depth then less slop.
+    Real separationFloor(const Manifold& m, Real slop) const;
+    // The contact's bodies collided again and pushed apart (positions only) until no point is deeper than
+    // separationFloor(), at most two pushes; returns the pushes.
+    int separatePair(uint32_t slot, Real slop);
     void refreshTransforms();
     void wakeIsland(uint32_t body);
     void restartSleepClock(uint32_t body);
@@ -455,6 +473,8 @@ private:
     std::vector<uint8_t> m_turnsThroughFeatures;
     static constexpr uint8_t kTurnsAnyCorner = 1, kTurnsBoxCorner = 2;
     std::vector<uint32_t> m_pushedContacts; // pushOutOfContacts(): the contacts its first pass moved a body out of
+    std::vector<uint8_t> m_movedInto;       // separateMovedPairs(): per touching contact, movedInto()
+    std::vector<uint8_t> m_turnedFar;       // separateMovedPairs(): per body, turning fast enough to test
     std::vector<Real> m_radius;             // largest distance from the centre of mass to the surface
     // Hulls shaped like balls, cylinders or cones (WorldTuning::roundHullRoundness): each with the spin (rad/s, about
     // its axis if it has one) above which it is round in a step, and that axis (principal frame; zero for a ball).

@@ -209,7 +209,8 @@ private slots:
             counters += line.startsWith("counter=") && line.contains(" value=") ? 1 : 0;
             effects += line.startsWith("effects=") ? 1 : 0;
         }
-        QCOMPARE(stages, 16); // rl::kStageCount
+        QCOMPARE(stages, 17); // rl::kStageCount
+        QVERIFY(r.out.contains("stage=separate ms="));
         QVERIFY(r.out.contains("stage=prepare_contacts ms=") && r.out.contains("stage=store_impulses ms="));
         QCOMPARE(effects, 1);
         QVERIFY(counters >= 10);

@@ -221,6 +221,8 @@ private slots:
         QTest::newRow("restitution") << int(Effect::Restitution) << int(Stage::Restitution);
         QTest::newRow("ccd") << int(Effect::Ccd) << int(Stage::Ccd);
         QTest::newRow("sleeping") << int(Effect::Sleeping) << int(Stage::Sleep);
+        // Turned features pushed apart after the step (World::separateMovedPairs()) need turns.
+        QTest::newRow("rotation") << int(Effect::Rotation) << int(Stage::Separate);
     }
     void skippedStagesDoNotRun() {
         QFETCH(int, effect);

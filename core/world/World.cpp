@@ -478,9 +478,9 @@ Real World::separationFloor(const Manifold& m, Real slop) const {
     return start < -m_tuning.separateDeepStart ? start - slop : -slop;
 }
 
-bool World::movedInto(uint32_t slot, Real slop) const {
+bool World::movedInto(uint32_t slot, Real slop, bool turned) const {
     const uint32_t a = m_contactPairs[slot].bodyA, b = m_contactPairs[slot].bodyB;
-    if (!m_turnedFar[a] && !m_turnedFar[b]) // then the two turns together moved no point separateTurn
+    if (turned && !m_turnedFar[a] && !m_turnedFar[b]) // then the two turns together moved no point separateTurn
         return false;
     const Manifold& m = m_contactPool[slot].manifold;
     const bool movesA = m_state.isMoving(a), movesB = m_state.isMoving(b);
@@ -489,7 +489,7 @@ bool World::movedInto(uint32_t slot, Real slop) const {
     const auto turn = [&](uint32_t i, bool moves) {
         return moves ? glm::length(m_state.angularVelocity[i]) * m_radius[i] / m_fps : 0.0;
     };
-    if (!(turn(a, movesA) + turn(b, movesB) > m_tuning.separateTurn))
+    if (turned && !(turn(a, movesA) + turn(b, movesB) > m_tuning.separateTurn))
         return false;
     const Real limit = -separationFloor(m, slop); // deeper than this counts
     // The shapes overlap by no more than they do along any one direction: along the contact's normal turned with A
@@ -574,18 +574,19 @@ void World::separateMovedPairs(Real slop) {
     // contacts' order, so the frames are the same on any number of threads.
     //
     // Measured 2026-12-06, against 10942cb: ramps.obj's first 900 frames held a contact deeper than 1 cm in 0 frames
-    // against 20, deeper than 5 mm in 6 against 69, the deepest 9.2 mm against 46.4; over its first 120 frames from
-    // 17 starts (every cube moved by up to 0.1 mm), the deepest 9.2-23.3 mm against 43.1-56.8. Piles of 1,000
-    // boxes, seeds 1-144, 600 frames (from frame 5 on: the piles begin overlapping): 1,088 frames deeper than 1 cm
-    // in all against 3,753, the deepest 23.6 mm on average against 38.9; 142 at rest at 10 s against 141. Dominoes
-    // (tst_motion): 2.0-2.6 mm. The pass took 2.8-2.9 % of the stages' time over ramps.obj's 900 frames and 4.3 %
-    // over its first 120, 3.5-3.6 % over boxes1000's 300 and 6.1-6.2 % over its first 120, 0.1 % in large_pyramid
-    // (the loop over the bodies); the whole step was no slower for it: one thread, each frame's least of two runs,
-    // three rounds by turns, ramps.obj's 120 frames 2.111-2.125 ms against 2.138-2.151, boxes1000's 3.98-4.03 ms
-    // against 4.01-4.08 (the frames differ: over ramps.obj's 120 frames the other stages took 12 ms less in all,
-    // 204-206 ms against 217-218). Linear velocity is not
-    // looked at: a translation alone keeps the manifold's deepest features deepest, and counting it (with 2 mm)
-    // cost 1.2 % in large_pyramid and left ramps.obj's contacts as deep.
+    // against 20, deeper than 5 mm in 0 against 69, the deepest 5.0 mm against 46.4; over its first 120 frames from
+    // 17 starts (every cube moved by up to 0.1 mm), the deepest 3.6-16.0 mm against 43.1-56.8 (9.2-23.3 with the
+    // first pass of pushes alone). Piles of 1,000 boxes, seeds 1-144, 600 frames (from frame 5 on: the piles begin
+    // overlapping): 524 frames deeper than 1 cm in all against 3,753, the deepest 21.3 mm on average against 38.9;
+    // 285 of seeds 1-288 at rest at 10 s either way (other seeds). Dominoes (tst_motion): 2.0-2.1 mm. The pass took
+    // 3.0 % of the stages' time over ramps.obj's 900 frames and 4.8 % over its first 120, 4.2 % over boxes1000's 300
+    // and 7.1 % over its first 120, 0.1 % in large_pyramid (the loop over the bodies); no step was slower for it:
+    // one thread, each frame's least of two runs, three rounds by turns, ramps.obj's 120 frames 2.079-2.095 ms
+    // against 2.142-2.177, boxes1000's 4.02-4.08 ms against 4.02-4.27 (the frames differ: over ramps.obj's 120
+    // frames the other stages took 16-23 ms less in all). Linear velocity is not looked at: a translation alone
+    // keeps the manifold's deepest features deepest, and counting it (with 2 mm; one pass) cost 1.2 % in
+    // large_pyramid and left ramps.obj's contacts as deep. Pushed without turning the bodies (tried), the 17 starts
+    // gave 3.7-18.0 mm.
     //
     // First each body: whether its turn moves a point of it by more than half separateTurn in a step (a pile at
     // rest, or a pyramid settling with 49,000 contacts, ends here).
@@ -602,16 +603,36 @@ void World::separateMovedPairs(Real slop) {
     m_movedInto.assign(n, 0);
     const auto test = [&](size_t begin, size_t end) {
         for (size_t k = begin; k < end; ++k)
-            m_movedInto[k] = movedInto(m_touchingContacts[k], slop) ? 1 : 0;
+            m_movedInto[k] = movedInto(m_touchingContacts[k], slop, true) ? 1 : 0;
     };
     if (m_team && n >= kMinBodiesForTeam)
         teamParallelFor()(n, test);
     else
         test(0, n);
+    // Then the pushes, and a second pass over every contact of a body pushed in the first (whatever its turn): a push
+    // drives a body into its other neighbours, and turning it can bring another of its corners into the same one (in
+    // ramps.obj from one of the 17 starts, a pair 39.9 mm deep was 48.0 mm deep after one push).
     uint64_t pushes = 0;
-    for (size_t k = 0; k < n; ++k)
-        if (m_movedInto[k])
-            pushes += static_cast<uint64_t>(separatePair(m_touchingContacts[k], slop));
+    std::vector<uint8_t>& pushed = m_turnedFar; // from here on: the bodies pushed
+    std::fill(pushed.begin(), pushed.end(), 0);
+    bool anyPushed = false;
+    for (size_t k = 0; k < n; ++k) {
+        if (!m_movedInto[k])
+            continue;
+        const uint32_t slot = m_touchingContacts[k];
+        if (const int p = separatePair(slot, slop); p > 0) {
+            pushes += static_cast<uint64_t>(p);
+            pushed[m_contactPairs[slot].bodyA] = pushed[m_contactPairs[slot].bodyB] = 1;
+            anyPushed = true;
+        }
+    }
+    if (anyPushed)
+        for (size_t k = 0; k < n; ++k) {
+            const uint32_t slot = m_touchingContacts[k];
+            if ((pushed[m_contactPairs[slot].bodyA] || pushed[m_contactPairs[slot].bodyB]) &&
+                movedInto(slot, slop, false))
+                pushes += static_cast<uint64_t>(separatePair(slot, slop));
+        }
     m_profile.count(Counter::SeparatedPairs, pushes);
 }
 

@@ -423,9 +423,9 @@ private:
     void updateRoundHulls();
     void pushOutOfContacts(Real slop);
     void separateMovedPairs(Real slop);
-    // Whether the contact's bodies turned fast in the step (WorldTuning::separateTurn) and, collided again, have a
-    // point deeper than separationFloor() (separateMovedPairs()); reads the state only.
-    bool movedInto(uint32_t slot, Real slop) const;
+    // Whether the contact's bodies, collided again, have a point deeper than separationFloor(), and with `turned`
+    // whether they also turned fast in the step (WorldTuning::separateTurn; separateMovedPairs()). Reads the state.
+    bool movedInto(uint32_t slot, Real slop, bool turned) const;
     // How deep (negative) a contact may be after the step: -slop, or for one that began the step deeper than
     // WorldTuning::separateDeepStart, its depth then less slop.
     Real separationFloor(const Manifold& m, Real slop) const;
@@ -474,7 +474,7 @@ private:
     static constexpr uint8_t kTurnsAnyCorner = 1, kTurnsBoxCorner = 2;
     std::vector<uint32_t> m_pushedContacts; // pushOutOfContacts(): the contacts its first pass moved a body out of
     std::vector<uint8_t> m_movedInto;       // separateMovedPairs(): per touching contact, movedInto()
-    std::vector<uint8_t> m_turnedFar;       // separateMovedPairs(): per body, turning fast enough to test
+    std::vector<uint8_t> m_turnedFar;       // separateMovedPairs(): per body, turning fast enough to test; then pushed
     std::vector<Real> m_radius;             // largest distance from the centre of mass to the surface
     // Hulls shaped like balls, cylinders or cones (WorldTuning::roundHullRoundness): each with the spin (rad/s, about
     // its axis if it has one) above which it is round in a step, and that axis (principal frame; zero for a ball).

@@ -57,7 +57,7 @@ enum class Counter {
     IslandsInBodyOrder, // of IslandsSharedOut, the solves whose islands went to the members in runs of body order
     PushedContacts,     // contacts whose points World::pushOutOfContacts() moved a body out of
     BoundedBounces,     // bounces the restitution pass took back to the energy of free flight (ContactSolver::launch())
-    SeparatedPairs,     // pushes World::separateMovedPairs() made (a pair takes at most two a step)
+    SeparatedPairs,     // pushes World::separateMovedPairs() made (at most two a pair in each of its two passes)
     Count
 };
 inline constexpr int kCounterCount = static_cast<int>(Counter::Count);

@@ -471,6 +471,14 @@ void World::pushOutOfContacts(Real slop) {
     m_profile.count(Counter::PushedContacts, pushed.size());
 }
 
+CollideOptions World::pairCollideOptions() const {
+    CollideOptions options;
+    // Overlapping edges are clipped like edges apart (CollideOptions) where the pair's margin is at least twice the
+    // speculative distance, that is where its bodies' speeds and turns may close it by that much within the step.
+    options.clipOverlappingEdgesFrom = 2.0 * m_tuning.speculativeDistance;
+    return options;
+}
+
 Real World::separationFloor(const Manifold& m, Real slop) const {
     Real start = 0.0; // the deepest point at the step's start, or 0
     for (int k = 0; k < m.pointCount; ++k)
@@ -505,9 +513,7 @@ bool World::movedInto(uint32_t slot, Real slop, bool turned) const {
         !(overlapAlong(xfB.rotation * (glm::transpose(m_transforms[b].rotation) * m.normal)) > limit))
         return false;
     Manifold fresh;
-    CollideOptions options;
-    options.clipOverlappingEdgesFrom = 2.0 * m_tuning.speculativeDistance;
-    if (!collide(m_shapes[a], xfA, m_shapes[b], xfB, 0.0, fresh, options))
+    if (!collide(m_shapes[a], xfA, m_shapes[b], xfB, 0.0, fresh, pairCollideOptions()))
         return false;
     for (int k = 0; k < fresh.pointCount; ++k)
         if (fresh.points[k].separation < -limit)
@@ -520,8 +526,7 @@ int World::separatePair(uint32_t slot, Real slop) {
     const uint32_t a = m.bodyA, b = m.bodyB;
     const bool movesA = m_state.isMoving(a), movesB = m_state.isMoving(b);
     const Real target = separationFloor(m, slop); // no point deeper than this
-    CollideOptions options;
-    options.clipOverlappingEdgesFrom = 2.0 * m_tuning.speculativeDistance;
+    const CollideOptions options = pairCollideOptions();
     int pushes = 0;
     for (; pushes < 2; ++pushes) {
         Manifold fresh;
@@ -950,11 +955,7 @@ void World::collidePair(uint32_t slot, Real margin) {
     Manifold fresh;
     fresh.bodyA = a;
     fresh.bodyB = b;
-    CollideOptions options;
-    // Overlapping edges are clipped like edges apart (CollideOptions) where the pair's margin is at least twice the
-    // speculative distance, that is where its bodies' speeds and turns may close it by that much within the step.
-    options.clipOverlappingEdgesFrom = 2.0 * m_tuning.speculativeDistance;
-    collide(m_shapes[a], xfA, m_shapes[b], xfB, margin, fresh, options);
+    collide(m_shapes[a], xfA, m_shapes[b], xfB, margin, fresh, pairCollideOptions());
     if (fresh.pointCount > 0 && (m_turnsThroughFeatures[a] || m_turnsThroughFeatures[b])) {
         const Real dt = 1.0 / m_fps;
         const auto turn = [&](uint32_t i) {

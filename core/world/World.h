@@ -24,6 +24,8 @@
 
 namespace rl {
 
+struct CollideOptions; // collision/Collide.h
+
 // Run-time overrides of the scene's world settings (the CLI's --fps, --substeps, ...).
 struct WorldOptions {
     std::optional<Real> fps;
@@ -423,6 +425,8 @@ private:
     void updateRoundHulls();
     void pushOutOfContacts(Real slop);
     void separateMovedPairs(Real slop);
+    // The options of every collision of a pair (collidePair(), movedInto(), separatePair()).
+    CollideOptions pairCollideOptions() const;
     // Whether the contact's bodies, collided again, have a point deeper than separationFloor(), and with `turned`
     // whether they also turned fast in the step (WorldTuning::separateTurn; separateMovedPairs()). Reads the state.
     bool movedInto(uint32_t slot, Real slop, bool turned) const;

@@ -246,6 +246,20 @@ Aabb Shape::worldBounds(const Transform& xf) const {
     return box;
 }
 
+Real Shape::reachAlong(const Transform& xf, const Vec3& direction) const {
+    const Vec3 local = xf.rotateInverse(direction);
+    if (kind != ShapeKind::Sphere && polyhedron && polyhedron->isBox) {
+        const ConvexPolyhedron::BoxFeatures& b = polyhedron->box;
+        const Real centre = glm::dot(direction, xf.position) + glm::dot(local, b.center);
+        Real reach = 0.0;
+        for (int i = 0; i < 3; ++i)
+            reach += std::abs(glm::dot(local, b.axis[i])) * b.reach[i];
+        // A relative 1e-14 covers the rounding, as in worldBounds().
+        return centre + reach + 1e-14 * (std::abs(centre) + reach);
+    }
+    return glm::dot(direction, xf.apply(support(local)));
+}
+
 Real Shape::boundingRadius() const {
     switch (kind) {
     case ShapeKind::Sphere:

@@ -98,6 +98,10 @@ struct Shape {
 
     Aabb localBounds() const;
     Aabb worldBounds(const Transform& xf) const;
+    // An upper bound of dot(direction, x) over the shape's points x placed by xf, for a unit world direction: the
+    // exact support for spheres and hulls; for a box, its centre plus its reaches along its axes, within rounding
+    // (as worldBounds()), which takes no support query.
+    Real reachAlong(const Transform& xf, const Vec3& direction) const;
     // Largest distance from the shape origin to any point of the shape: bounds the speed of a rotating point.
     Real boundingRadius() const;
     // Smallest width of the local bounds (0 for a flat polygon): the CCD criterion compares motion with it.

@@ -486,28 +486,18 @@ Real World::separationFloor(const Manifold& m, Real slop) const {
     return start < -m_tuning.separateDeepStart ? start - slop : -slop;
 }
 
-bool World::movedInto(uint32_t slot, Real slop, bool turned) const {
+bool World::movedInto(uint32_t slot, Real slop, const Transform& xfA, const Transform& xfB) const {
     const uint32_t a = m_contactPairs[slot].bodyA, b = m_contactPairs[slot].bodyB;
-    if (turned && !m_turnedFar[a] && !m_turnedFar[b]) // then the two turns together moved no point separateTurn
-        return false;
     const Manifold& m = m_contactPool[slot].manifold;
-    const bool movesA = m_state.isMoving(a), movesB = m_state.isMoving(b);
-    if ((!movesA && !movesB) || m.pointCount == 0)
-        return false;
-    const auto turn = [&](uint32_t i, bool moves) {
-        return moves ? glm::length(m_state.angularVelocity[i]) * m_radius[i] / m_fps : 0.0;
-    };
-    if (turned && !(turn(a, movesA) + turn(b, movesB) > m_tuning.separateTurn))
+    if ((!m_state.isMoving(a) && !m_state.isMoving(b)) || m.pointCount == 0)
         return false;
     const Real limit = -separationFloor(m, slop); // deeper than this counts
     // The shapes overlap by no more than they do along any one direction: along the contact's normal turned with A
     // and turned with B. Most turning contacts end here (a box resting tilted on another's edge overlaps it far more
-    // along the normal turned with one of them than the two overlap).
-    const Transform xfA = transform(a), xfB = transform(b);
+    // along the normal turned with one of them than the two overlap). A box's reach along a direction takes no
+    // support query (Shape::reachAlong()).
     const auto overlapAlong = [&](const Vec3& n) {
-        const Vec3 onA = xfA.apply(m_shapes[a].support(xfA.rotateInverse(n)));
-        const Vec3 onB = xfB.apply(m_shapes[b].support(xfB.rotateInverse(-n)));
-        return glm::dot(n, onA - onB);
+        return m_shapes[a].reachAlong(xfA, n) + m_shapes[b].reachAlong(xfB, -n);
     };
     if (!(overlapAlong(xfA.rotation * (glm::transpose(m_transforms[a].rotation) * m.normal)) > limit) ||
         !(overlapAlong(xfB.rotation * (glm::transpose(m_transforms[b].rotation) * m.normal)) > limit))
@@ -596,24 +586,44 @@ void World::separateMovedPairs(Real slop) {
     // First each body: whether its turn moves a point of it by more than half separateTurn in a step (a pile at
     // rest, or a pyramid settling with 49,000 contacts, ends here).
     const size_t bodies = m_state.size();
+    m_turnStep.assign(bodies, 0.0);
     m_turnedFar.assign(bodies, 0);
     bool any = false;
-    for (uint32_t i = 0; i < bodies; ++i)
-        if (m_state.isMoving(i) &&
-            glm::length(m_state.angularVelocity[i]) * m_radius[i] / m_fps > 0.5 * m_tuning.separateTurn)
+    for (uint32_t i = 0; i < bodies; ++i) {
+        if (!m_state.isMoving(i))
+            continue;
+        m_turnStep[i] = glm::length(m_state.angularVelocity[i]) * m_radius[i] / m_fps;
+        if (m_turnStep[i] > 0.5 * m_tuning.separateTurn)
             m_turnedFar[i] = 1, any = true;
+    }
     if (!any)
         return;
+    // The touching contacts whose two turns together move a point by more than separateTurn (neither turning by half
+    // of it: not). The tests take each body's transform again rather than share one list of them: on two threads
+    // with the cores far apart, a list taken by member 0 made the stage slower over boxes1000's first 120 frames
+    // (26.2-27.1 ms against 23.4-23.6 before this list of contacts; 19.1 ms without it; 2026-12-06).
     const size_t n = m_touchingContacts.size();
-    m_movedInto.assign(n, 0);
+    m_turnedContacts.clear();
+    for (size_t k = 0; k < n; ++k) {
+        const uint32_t slot = m_touchingContacts[k];
+        const uint32_t a = m_contactPairs[slot].bodyA, b = m_contactPairs[slot].bodyB;
+        if ((m_turnedFar[a] || m_turnedFar[b]) && m_turnStep[a] + m_turnStep[b] > m_tuning.separateTurn)
+            m_turnedContacts.push_back(static_cast<uint32_t>(k));
+    }
+    const size_t tests = m_turnedContacts.size();
+    m_movedInto.assign(tests, 0);
     const auto test = [&](size_t begin, size_t end) {
-        for (size_t k = begin; k < end; ++k)
-            m_movedInto[k] = movedInto(m_touchingContacts[k], slop, true) ? 1 : 0;
+        for (size_t t = begin; t < end; ++t) {
+            const uint32_t slot = m_touchingContacts[m_turnedContacts[t]];
+            const bool deep =
+                movedInto(slot, slop, transform(m_contactPairs[slot].bodyA), transform(m_contactPairs[slot].bodyB));
+            m_movedInto[t] = deep ? 1 : 0;
+        }
     };
-    if (m_team && n >= kMinBodiesForTeam)
-        teamParallelFor()(n, test);
+    if (m_team && tests >= kMinBodiesForTeam)
+        teamParallelFor()(tests, test);
     else
-        test(0, n);
+        test(0, tests);
     // Then the pushes, and a second pass over every contact of a body pushed in the first (whatever its turn): a push
     // drives a body into its other neighbours, and turning it can bring another of its corners into the same one (in
     // ramps.obj from one of the 17 starts, a pair 39.9 mm deep was 48.0 mm deep after one push).
@@ -621,10 +631,10 @@ void World::separateMovedPairs(Real slop) {
     std::vector<uint8_t>& pushed = m_turnedFar; // from here on: the bodies pushed
     std::fill(pushed.begin(), pushed.end(), 0);
     bool anyPushed = false;
-    for (size_t k = 0; k < n; ++k) {
-        if (!m_movedInto[k])
+    for (size_t t = 0; t < tests; ++t) {
+        if (!m_movedInto[t])
             continue;
-        const uint32_t slot = m_touchingContacts[k];
+        const uint32_t slot = m_touchingContacts[m_turnedContacts[t]];
         if (const int p = separatePair(slot, slop); p > 0) {
             pushes += static_cast<uint64_t>(p);
             pushed[m_contactPairs[slot].bodyA] = pushed[m_contactPairs[slot].bodyB] = 1;
@@ -634,8 +644,8 @@ void World::separateMovedPairs(Real slop) {
     if (anyPushed)
         for (size_t k = 0; k < n; ++k) {
             const uint32_t slot = m_touchingContacts[k];
-            if ((pushed[m_contactPairs[slot].bodyA] || pushed[m_contactPairs[slot].bodyB]) &&
-                movedInto(slot, slop, false))
+            const uint32_t a = m_contactPairs[slot].bodyA, b = m_contactPairs[slot].bodyB;
+            if ((pushed[a] || pushed[b]) && movedInto(slot, slop, transform(a), transform(b)))
                 pushes += static_cast<uint64_t>(separatePair(slot, slop));
         }
     m_profile.count(Counter::SeparatedPairs, pushes);

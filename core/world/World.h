@@ -427,9 +427,9 @@ private:
     void separateMovedPairs(Real slop);
     // The options of every collision of a pair (collidePair(), movedInto(), separatePair()).
     CollideOptions pairCollideOptions() const;
-    // Whether the contact's bodies, collided again, have a point deeper than separationFloor(), and with `turned`
-    // whether they also turned fast in the step (WorldTuning::separateTurn; separateMovedPairs()). Reads the state.
-    bool movedInto(uint32_t slot, Real slop, bool turned) const;
+    // Whether the contact's bodies, placed by xfA and xfB (where the step left them), collided again, have a point
+    // deeper than separationFloor() (separateMovedPairs()). Reads the state.
+    bool movedInto(uint32_t slot, Real slop, const Transform& xfA, const Transform& xfB) const;
     // How deep (negative) a contact may be after the step: -slop, or for one that began the step deeper than
     // WorldTuning::separateDeepStart, its depth then less slop.
     Real separationFloor(const Manifold& m, Real slop) const;
@@ -477,9 +477,14 @@ private:
     std::vector<uint8_t> m_turnsThroughFeatures;
     static constexpr uint8_t kTurnsAnyCorner = 1, kTurnsBoxCorner = 2;
     std::vector<uint32_t> m_pushedContacts; // pushOutOfContacts(): the contacts its first pass moved a body out of
-    std::vector<uint8_t> m_movedInto;       // separateMovedPairs(): per touching contact, movedInto()
-    std::vector<uint8_t> m_turnedFar;       // separateMovedPairs(): per body, turning fast enough to test; then pushed
-    std::vector<Real> m_radius;             // largest distance from the centre of mass to the surface
+    // separateMovedPairs(): per body, how far its turn moves a point of it in a step, and whether that reaches half
+    // WorldTuning::separateTurn (then: whether it was pushed); the touching contacts to test (positions in
+    // m_touchingContacts) and movedInto() of each.
+    std::vector<Real> m_turnStep;
+    std::vector<uint8_t> m_turnedFar;
+    std::vector<uint32_t> m_turnedContacts;
+    std::vector<uint8_t> m_movedInto;
+    std::vector<Real> m_radius; // largest distance from the centre of mass to the surface
     // Hulls shaped like balls, cylinders or cones (WorldTuning::roundHullRoundness): each with the spin (rad/s, about
     // its axis if it has one) above which it is round in a step, and that axis (principal frame; zero for a ball).
     struct RoundHull {

@@ -9,6 +9,8 @@
 using namespace rl;
 using namespace rl::test;
 
+Q_DECLARE_METATYPE(rl::Shape)
+
 namespace {
 
 struct DistanceCase {
@@ -214,6 +216,50 @@ private slots:
         }
         QCOMPARE(box.minExtent(), 0.4);
         QVERIFY(std::abs(box.boundingRadius() - std::sqrt(0.25 + 0.04 + 0.09)) < 1e-15);
+    }
+
+    // A shape's reach along a direction (Shape::reachAlong(), the collisions after the step bound an overlap with it)
+    // is the largest dot(direction, x) over its points, to within rounding and never below it; boxes take it from
+    // their centre and axes, not a support query.
+    void reachAlong_data() {
+        QTest::addColumn<Shape>("shape");
+        QTest::addColumn<bool>("box"); // the polyhedron is recognised as a box (the closed form is taken)
+        std::mt19937_64 rng(5);
+        QTest::newRow("box") << mustShape(makeBox(Vec3(0.5, 0.2, 0.3))) << true;
+        // A box hull off its origin and turned in its own coordinates, as an exported cube is.
+        ConvexHull turned = boxHull(Vec3(0.4, 0.1, 0.25));
+        const Mat3 r = glm::mat3_cast(axisAngle(Vec3(1.0, 2.0, -1.0), 0.6));
+        for (Vec3& v : turned.vertices)
+            v = r * v + Vec3(0.3, -1.2, 2.0);
+        for (HullFace& f : turned.faces) {
+            f.normal = r * f.normal;
+            f.offset += glm::dot(f.normal, Vec3(0.3, -1.2, 2.0));
+        }
+        QTest::newRow("turned box hull off its origin") << mustShape(makeHull(turned)) << true;
+        QTest::newRow("sphere") << mustShape(makeSphere(0.4)) << false;
+        QTest::newRow("random hull") << randomPolyhedron(rng) << false;
+        QTest::newRow("uv sphere hull") << mustShape(makeHull(uvSphereHull(0.5, 8, 16))) << false;
+    }
+    void reachAlong() {
+        QFETCH(Shape, shape);
+        QFETCH(bool, box);
+        QCOMPARE(shape.polyhedron && shape.polyhedron->isBox, box);
+        std::mt19937_64 rng(11);
+        std::normal_distribution<Real> n(0.0, 1.0);
+        for (int i = 0; i < 200; ++i) {
+            const Transform xf = Transform::fromQuat(Vec3(n(rng), n(rng), n(rng)) * 10.0, randomRotation(rng));
+            const Vec3 direction = glm::normalize(Vec3(n(rng), n(rng), n(rng)));
+            Real expected = -1e300;
+            if (shape.polyhedron)
+                for (const Vec3& v : shape.polyhedron->vertices)
+                    expected = std::max(expected, glm::dot(direction, xf.apply(v)));
+            else
+                expected = glm::dot(direction, xf.position) + shape.radius;
+            const Real reach = shape.reachAlong(xf, direction);
+            QVERIFY2(
+                reach >= expected - 1e-14 && reach <= expected + 1e-12,
+                qPrintable(QString("pose %1: %2 against %3").arg(i).arg(reach, 0, 'g', 17).arg(expected, 0, 'g', 17)));
+        }
     }
 
     void badShapesAreErrors() {

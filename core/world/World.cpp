@@ -521,11 +521,12 @@ int World::separatePair(uint32_t slot, Real slop, std::vector<uint8_t>* grounded
     const Manifold& m = m_contactPool[slot].manifold;
     const uint32_t a = m_contactPairs[slot].bodyA, b = m_contactPairs[slot].bodyB;
     // Pushed to the floor when deeper than it. In rounds (groundPushedBodies()), the floor is the slop under the
-    // contact's depth at the step's start, whatever that was: at the foot of a stack of cubes resting 2-3 mm in each
-    // other, pushing the lowest out of the floor to 2 mm lifted the next by as much plus its own depth, and so on up
-    // (4.7, 6.7, 8.4, 9.9 mm in ramps.obj), and left the last pair 10.9 mm deep. A pair is pushed in rounds when
-    // kRoundsBeyond deeper than the floor, to half the slop inside it, so that the pairs the pushes before left at
-    // the floor are not pushed again for their rounding, nor a body between two others to and fro between them.
+    // contact's depth at the step's start, whatever that was: at the foot of a stack of falling cubes, 2-3 mm in each
+    // other after the step, pushing the lowest out of the floor to 2 mm lifted the next by as much plus its own depth,
+    // and so on up (5.7, 6.7, 8.4, 9.9 mm in ramps.obj), and left the last pair 10.9 mm deep. A pair is pushed in
+    // rounds when kRoundsBeyond deeper than the floor, to half the slop inside it, so that the pairs the pushes before
+    // left at the floor are not pushed again for their rounding, nor a body between two others to and fro between
+    // them.
     const Real floor = separationFloor(m, slop, grounded != nullptr);
     const Real target = grounded ? floor - kRoundsBeyond : floor; // no point deeper than this
     const Real aim = grounded ? floor + 0.5 * slop : floor;

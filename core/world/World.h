@@ -438,8 +438,8 @@ private:
     // separationFloor(), at most two pushes; returns the pushes. With `grounded` (per body; groundPushedBodies()), a
     // still or grounded body under one that is not is not moved, and grounds that one.
     int separatePair(uint32_t slot, Real slop, std::vector<uint8_t>* grounded = nullptr);
-    // After separateMovedPairs()'s pushes: the pushed bodies out of the still bodies they did not touch, and then
-    // rounds over the pairs of the bodies that moves; returns the pushes.
+    // After separateMovedPairs()'s pushes: the pushed bodies out of the still bodies they went into, and then
+    // rounds over the pairs of the bodies that moved; returns the pushes.
     uint64_t groundPushedBodies(Real slop);
     static constexpr int kSeparateRounds = 4;
     // In those rounds a pair is pushed where deeper than its floor by this (m): a body pushed 3-4 mm into the floor

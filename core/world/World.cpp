@@ -1069,12 +1069,11 @@ void World::collidePair(uint32_t slot, Real margin) {
 
     // A pair that was apart: if last step's separating axis still separates it by more than the margin, there is
     // no contact (the SAT or GJK would say the same, since the distance is at least that), and nothing to compute.
-    // Flat polygons are left out: their one-sided rule can report a contact for shapes apart on the wrong side.
+    // Flat polygons are left out: their one-sided rule can report a contact for shapes apart on the wrong side. (A
+    // box's reach along the axis is taken from its centre and axes, Shape::reachAlong().)
     if (c.manifold.pointCount == 0 && c.separatingAxis != Vec3(0.0)) {
         const Vec3 n = xfA.rotate(c.separatingAxis);
-        const Vec3 onA = xfA.apply(m_shapes[a].support(xfA.rotateInverse(n)));
-        const Vec3 onB = xfB.apply(m_shapes[b].support(xfB.rotateInverse(-n)));
-        if (glm::dot(n, onB - onA) > margin)
+        if (-(m_shapes[a].reachAlong(xfA, n) + m_shapes[b].reachAlong(xfB, -n)) > margin)
             return;
     }
 

@@ -761,6 +761,29 @@ private slots:
     // the anchor's corner went 42.5 mm into its side, nearly at right angles to the manifold's normal; collided again
     // after the step and pushed out (World::separateMovedPairs()), 2.0 mm (2026-12-06). (The first step starts 6.5
     // mm deep.)
+    void turningBoxesMeetCornerFirst_data() {
+        QTest::addColumn<bool>("lowerAnchored");
+        QTest::newRow("both moving") << false;
+        QTest::newRow("lower box anchored") << true;
+    }
+    void turningBoxesMeetCornerFirst() {
+        QFETCH(bool, lowerAnchored);
+        BodyDef lower = pileBox("Lower", Vec3(0.2035814, 0.2161822, 0.1927282), Vec3(2.860568, 2.223507, -3.971819),
+                                Quat(0.9605005, 0.0135724, 0.09993256, -0.2593608),
+                                Vec3(1.393733, -0.7981015, 0.2485836), Vec3(-2.058577, 3.688754, -8.356362));
+        if (lowerAnchored) {
+            lower.anchor = true;
+            lower.velocity = lower.angularVelocity = Vec3(0.0);
+        }
+        const BodyDef upper =
+            pileBox("Upper", Vec3(0.1615028, 0.2549494, 0.2387746), Vec3(3.055979, 2.613092, -3.992078),
+                    Quat(0.8856193, -0.02701502, 0.1078326, 0.4509111), Vec3(-0.05725528, -2.812669, -0.2922887),
+                    Vec3(-4.78871, 1.628526, 12.76246));
+        const RunStats stats = runCapturedPair(lower, upper, 1); // the first step starts 6.5 mm deep
+        QVERIFY(stats.allFinite);
+        QVERIFY(stats.maxPenetration < 0.005);
+    }
+
     // A thrown 2.3 kg box struck from above in mid-air by a 107 kg ball, both falling at 16-18 m/s and the box
     // spinning at 128 rad/s (captured from a random scene of mixed hulls, 2026-12-06). At the step's start the box had
     // only speculative points on the floor; pushed out of the ball after the step, it went 62.8 mm into the floor,
@@ -820,29 +843,6 @@ private slots:
         QVERIFY(stats.allFinite);
         QVERIFY(lowest > -0.005);
         QVERIFY(most <= start * (1.0 + 1e-9));
-    }
-
-    void turningBoxesMeetCornerFirst_data() {
-        QTest::addColumn<bool>("lowerAnchored");
-        QTest::newRow("both moving") << false;
-        QTest::newRow("lower box anchored") << true;
-    }
-    void turningBoxesMeetCornerFirst() {
-        QFETCH(bool, lowerAnchored);
-        BodyDef lower = pileBox("Lower", Vec3(0.2035814, 0.2161822, 0.1927282), Vec3(2.860568, 2.223507, -3.971819),
-                                Quat(0.9605005, 0.0135724, 0.09993256, -0.2593608),
-                                Vec3(1.393733, -0.7981015, 0.2485836), Vec3(-2.058577, 3.688754, -8.356362));
-        if (lowerAnchored) {
-            lower.anchor = true;
-            lower.velocity = lower.angularVelocity = Vec3(0.0);
-        }
-        const BodyDef upper =
-            pileBox("Upper", Vec3(0.1615028, 0.2549494, 0.2387746), Vec3(3.055979, 2.613092, -3.992078),
-                    Quat(0.8856193, -0.02701502, 0.1078326, 0.4509111), Vec3(-0.05725528, -2.812669, -0.2922887),
-                    Vec3(-4.78871, 1.628526, 12.76246));
-        const RunStats stats = runCapturedPair(lower, upper, 1); // the first step starts 6.5 mm deep
-        QVERIFY(stats.allFinite);
-        QVERIFY(stats.maxPenetration < 0.005);
     }
 
     // A row of 30 dominoes toppled from one end, as Blender users build them: every domino falls (turned by more

@@ -679,7 +679,7 @@ void World::separateMovedPairs(Real slop) {
         }
     }
     if (anyPushed) {
-        std::vector<uint32_t>& second = m_aroundPushed; // the bodies this second pass pushes
+        std::vector<uint32_t>& second = m_secondPushed; // the bodies this second pass pushes
         second.clear();
         for (size_t k = 0; k < n; ++k) {
             const uint32_t slot = m_touchingContacts[k];

@@ -493,6 +493,7 @@ private:
     std::vector<uint8_t> m_turnedFar;
     std::vector<uint32_t> m_turnedContacts;
     std::vector<uint8_t> m_movedInto;
+    std::vector<uint32_t> m_secondPushed; // separateMovedPairs(): the bodies its second pass pushed
     // groundPushedBodies(): per body, whether this round pushed it and whether it is grounded; the slots of the
     // pairs to test.
     std::vector<uint8_t> m_pushedNow, m_grounded;

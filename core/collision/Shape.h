@@ -109,6 +109,14 @@ struct Shape {
     Vec3 centre() const { return polyhedron ? polyhedron->centroid : Vec3(0.0); }
 };
 
+// How far a (placed by xfA) and b (by xfB) overlap along the unit direction n, from A to B: reach of a along n plus
+// reach of b along -n (Shape::reachAlong()). No point of the two is deeper in the other than this; negative: they are
+// apart by at least its magnitude.
+inline Real overlapAlongAxis(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB,
+                             const Vec3& n) {
+    return a.reachAlong(xfA, n) + b.reachAlong(xfB, -n);
+}
+
 Result<Shape> makeSphere(Real radius);
 Result<Shape> makeBox(const Vec3& halfExtents);
 // Solid and flat hulls are accepted; empty, point and line hulls, open or non-finite hulls are errors.

@@ -432,13 +432,7 @@ void World::pushOutOfContacts(Real slop) {
                 if (!(w > 0.0))
                     return;
                 const Real push = -(sep + slop) / w; // along `out`
-                m_state.position[body] += m_state.invMass[body] * push * out;
-                // (First order: a push turns a body by little. The exponential map, rotationFromVector(), changes the
-                // frames, and with it two of the 144 piles of tst_piles' kind, seeds 7 and 36, were still moving at
-                // 10 s, 2026-12-05.)
-                const Vec3 theta = push * (inverseInertia * c);
-                Quat& q = m_state.orientation[body];
-                q = glm::normalize(q + 0.5 * Quat(0.0, theta.x, theta.y, theta.z) * q);
+                nudge(body, push, out, m_state.invMass[body], inverseInertia, c);
                 moved = movedAny = true;
             };
             // The manifold's points, then the body's corner deepest along the normal, which a fast turn may have
@@ -471,6 +465,16 @@ void World::pushOutOfContacts(Real slop) {
     m_profile.count(Counter::PushedContacts, pushed.size());
 }
 
+void World::nudge(uint32_t body, Real push, const Vec3& direction, Real inverseMass, const Mat3& inverseInertia,
+                  const Vec3& arm) {
+    m_state.position[body] += inverseMass * push * direction;
+    // (First order: a push turns a body by little. The exponential map, rotationFromVector(), changes the frames, and
+    // with it two of the 144 piles of tst_piles' kind, seeds 7 and 36, were still moving at 10 s, 2026-12-05.)
+    const Vec3 theta = push * (inverseInertia * arm);
+    Quat& q = m_state.orientation[body];
+    q = glm::normalize(q + 0.5 * Quat(0.0, theta.x, theta.y, theta.z) * q);
+}
+
 CollideOptions World::pairCollideOptions() const {
     CollideOptions options;
     // Overlapping edges are clipped like edges apart (CollideOptions) where the pair's margin is at least twice the
@@ -498,9 +502,7 @@ bool World::movedInto(uint32_t slot, Real slop, const Transform& xfA, const Tran
     // Most turning contacts end here (a box resting tilted on another's edge overlaps it far more along the normal
     // turned with one of them than the two overlap). A box's reach along a direction takes no support query
     // (Shape::reachAlong()).
-    const auto overlapAlong = [&](const Vec3& n) {
-        return m_shapes[a].reachAlong(xfA, n) + m_shapes[b].reachAlong(xfB, -n);
-    };
+    const auto overlapAlong = [&](const Vec3& n) { return overlapAlongAxis(m_shapes[a], xfA, m_shapes[b], xfB, n); };
     if (m.pointCount > 0) {
         if (!(overlapAlong(xfA.rotation * (glm::transpose(m_transforms[a].rotation) * m.normal)) > limit) ||
             !(overlapAlong(xfB.rotation * (glm::transpose(m_transforms[b].rotation) * m.normal)) > limit))
@@ -572,16 +574,10 @@ int World::separatePair(uint32_t slot, Real slop, std::vector<uint8_t>* grounded
         if (!(w > 0.0))
             break;
         const Real push = (aim - fresh.points[deepest].separation) / w; // along n, B from A
-        const auto move = [&](uint32_t i, Real along, Real inverseMass, const Mat3& inverseInertia, const Vec3& c) {
-            m_state.position[i] += along * inverseMass * push * n;
-            const Vec3 theta = along * push * (inverseInertia * c);
-            Quat& q = m_state.orientation[i];
-            q = glm::normalize(q + 0.5 * Quat(0.0, theta.x, theta.y, theta.z) * q);
-        };
         if (movesA)
-            move(a, -1.0, wA, inertiaA, cA);
+            nudge(a, -push, n, wA, inertiaA, cA);
         if (movesB)
-            move(b, 1.0, wB, inertiaB, cB);
+            nudge(b, push, n, wB, inertiaB, cB);
         if (holdA)
             (*grounded)[b] = 1;
         if (holdB)
@@ -624,27 +620,24 @@ void World::separateMovedPairs(Real slop) {
     // rest, or a pyramid settling with 49,000 contacts, ends here).
     const size_t bodies = m_state.size();
     m_turnStep.assign(bodies, 0.0);
-    m_turnedFar.assign(bodies, 0);
     bool any = false;
     for (uint32_t i = 0; i < bodies; ++i) {
         if (!m_state.isMoving(i))
             continue;
         m_turnStep[i] = glm::length(m_state.angularVelocity[i]) * m_radius[i] / m_fps;
-        if (m_turnStep[i] > 0.5 * m_tuning.separateTurn)
-            m_turnedFar[i] = 1, any = true;
+        any = any || m_turnStep[i] > 0.5 * m_tuning.separateTurn;
     }
     if (!any)
         return;
-    // The touching contacts whose two turns together move a point by more than separateTurn (neither turning by half
-    // of it: not). The tests take each body's transform again rather than share one list of them: on two threads
-    // with the cores far apart, a list taken by member 0 made the stage slower over boxes1000's first 120 frames
-    // (26.2-27.1 ms against 23.4-23.6 before this list of contacts; 19.1 ms without it; 2026-12-06).
+    // The touching contacts whose two turns together move a point by more than separateTurn. The tests take each
+    // body's transform again rather than share one list of them: on two threads with the cores far apart, a list
+    // taken by member 0 made the stage slower over boxes1000's first 120 frames (26.2-27.1 ms against 23.4-23.6
+    // before this list of contacts; 19.1 ms without it; 2026-12-06).
     const size_t n = m_touchingContacts.size();
     m_turnedContacts.clear();
     for (size_t k = 0; k < n; ++k) {
         const uint32_t slot = m_touchingContacts[k];
-        const uint32_t a = m_contactPairs[slot].bodyA, b = m_contactPairs[slot].bodyB;
-        if ((m_turnedFar[a] || m_turnedFar[b]) && m_turnStep[a] + m_turnStep[b] > m_tuning.separateTurn)
+        if (m_turnStep[m_contactPairs[slot].bodyA] + m_turnStep[m_contactPairs[slot].bodyB] > m_tuning.separateTurn)
             m_turnedContacts.push_back(static_cast<uint32_t>(k));
     }
     const size_t tests = m_turnedContacts.size();
@@ -665,8 +658,8 @@ void World::separateMovedPairs(Real slop) {
     // drives a body into its other neighbours, and turning it can bring another of its corners into the same one (in
     // ramps.obj from one of the 17 starts, a pair 39.9 mm deep was 48.0 mm deep after one push).
     uint64_t pushes = 0;
-    std::vector<uint8_t>& pushed = m_turnedFar; // from here on: the bodies pushed
-    std::fill(pushed.begin(), pushed.end(), 0);
+    std::vector<uint8_t>& pushed = m_separated;
+    pushed.assign(bodies, 0);
     bool anyPushed = false;
     for (size_t t = 0; t < tests; ++t) {
         if (!m_movedInto[t])
@@ -711,7 +704,7 @@ uint64_t World::groundPushedBodies(Real slop) {
     // a body found in a still one starts the rounds: started from every pushed body, they changed ramps.obj's frames
     // where nothing went into an anchor, and its first 120 frames took 2.163-2.169 ms a step against 2.083-2.107
     // (2026-12-06; 0.49 of Bullet's against 0.47-0.48), most of it from the other frames.
-    std::vector<uint8_t>& last = m_turnedFar; // the bodies pushed in both passes; then those pushed in the round before
+    std::vector<uint8_t>& last = m_separated; // the bodies pushed in both passes; then those pushed in the round before
     std::vector<uint8_t>& now = m_pushedNow;
     now.assign(last.size(), 0);
     std::vector<uint8_t>& grounded = m_grounded;
@@ -1073,7 +1066,7 @@ void World::collidePair(uint32_t slot, Real margin) {
     // box's reach along the axis is taken from its centre and axes, Shape::reachAlong().)
     if (c.manifold.pointCount == 0 && c.separatingAxis != Vec3(0.0)) {
         const Vec3 n = xfA.rotate(c.separatingAxis);
-        if (-(m_shapes[a].reachAlong(xfA, n) + m_shapes[b].reachAlong(xfB, -n)) > margin)
+        if (-overlapAlongAxis(m_shapes[a], xfA, m_shapes[b], xfB, n) > margin)
             return;
     }
 

@@ -424,6 +424,11 @@ private:
     // Marks the round hulls that turn through a face or more in this step round (kBodyRound), the others not.
     void updateRoundHulls();
     void pushOutOfContacts(Real slop);
+    // Moves the body by a positional impulse `push` along `direction` applied at the arm (r x direction): its centre
+    // by inverseMass times it, its orientation to first order by inverseInertia times the arm (pushOutOfContacts(),
+    // separatePair()).
+    void nudge(uint32_t body, Real push, const Vec3& direction, Real inverseMass, const Mat3& inverseInertia,
+               const Vec3& arm);
     void separateMovedPairs(Real slop);
     // The options of every collision of a pair (collidePair(), movedInto(), separatePair()).
     CollideOptions pairCollideOptions() const;
@@ -486,11 +491,10 @@ private:
     std::vector<uint8_t> m_turnsThroughFeatures;
     static constexpr uint8_t kTurnsAnyCorner = 1, kTurnsBoxCorner = 2;
     std::vector<uint32_t> m_pushedContacts; // pushOutOfContacts(): the contacts its first pass moved a body out of
-    // separateMovedPairs(): per body, how far its turn moves a point of it in a step, and whether that reaches half
-    // WorldTuning::separateTurn (then: whether it was pushed); the touching contacts to test (positions in
-    // m_touchingContacts) and movedInto() of each.
+    // separateMovedPairs(): per body, how far its turn moves a point of it in a step, and whether it was pushed; the
+    // touching contacts to test (positions in m_touchingContacts) and movedInto() of each.
     std::vector<Real> m_turnStep;
-    std::vector<uint8_t> m_turnedFar;
+    std::vector<uint8_t> m_separated;
     std::vector<uint32_t> m_turnedContacts;
     std::vector<uint8_t> m_movedInto;
     std::vector<uint32_t> m_secondPushed; // separateMovedPairs(): the bodies its second pass pushed

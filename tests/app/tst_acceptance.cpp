@@ -79,6 +79,10 @@ private slots:
         QTest::newRow("pyramid20.obj") << "pyramid20.obj" << 0.01 << -1.0 << 0.05;
         QTest::newRow("slab.obj") << "slab.obj" << 0.05 << -1.0 << 0.05;
         QTest::newRow("jenga30.obj") << "jenga30.obj" << 0.05 << -1.0 << 0.05;
+        // 40 cards of 2 mm x 0.4 m built in Blender (stands: every card within 2 cm of where it was put), with card
+        // stock's mu 0.7 from the JSON scene, and straight from the OBJ (the Default material's mu 0.5).
+        QTest::newRow("card_house.rlscene (mu 0.7)") << "card_house.rlscene" << 0.02 << 0.01 << 0.02;
+        QTest::newRow("card_house.obj (mu 0.5)") << "card_house.obj" << 0.02 << 0.01 << 0.02;
     }
     void stacks() {
         QFETCH(QString, scene);
@@ -322,6 +326,36 @@ private slots:
               1e3 * low, qPrintable(body), frame, 1e2 * speed, 1e3 * b.csv.maxDisplacement());
         QVERIFY(low > -0.01);
         QVERIFY(speed < 0.01);
+    }
+
+    // 1,000 random boxes (0.3-0.8 m a side, turned at random, a 10 x 10 x 10 grid 1.6 m apart) dropped on a floor box:
+    // none below the floor, and the largest speed in the last second < 1 cm/s.
+    void randomBoxes() {
+        BAKE_OR_FAIL(b, dataPath("boxes1000.obj"));
+        QCOMPARE(b.csv.bodies, 1001);
+        int frame = 0;
+        QString body;
+        const double low = lowestVertexY(b.csv, dataPath("boxes1000.obj"), &frame, &body);
+        const double speed = b.csv.maxSpeedLastSecond();
+        qInfo("boxes1000: lowest vertex y %.3f mm ('%s', frame %d), max speed in the last second %.4f cm/s", 1e3 * low,
+              qPrintable(body), frame, 1e2 * speed);
+        QVERIFY(low > -0.01);
+        QVERIFY(speed < 0.01);
+    }
+
+    // Two identical 1 m boxes in the same place, no gravity: they part (centres more than a box apart) at no more than
+    // 3 m/s, with no NaN.
+    void coincidentBoxes() {
+        BAKE_OR_FAIL(b, dataPath("coincident_boxes.rlscene"));
+        double fastest = 0.0;
+        for (const Row& r : b.csv.rows)
+            fastest = std::max(fastest, std::sqrt(r[VX] * r[VX] + r[VY] * r[VY] + r[VZ] * r[VZ]));
+        const Row &a = b.csv.at(b.csv.last(), 0), &c = b.csv.at(b.csv.last(), 1);
+        const double apart =
+            std::sqrt((a[X] - c[X]) * (a[X] - c[X]) + (a[Y] - c[Y]) * (a[Y] - c[Y]) + (a[Z] - c[Z]) * (a[Z] - c[Z]));
+        qInfo("coincident_boxes: fastest %.3f m/s, centres %.3f m apart at 10 s", fastest, apart);
+        QVERIFY(fastest <= 3.0 + 1e-6);
+        QVERIFY(apart > 1.0);
     }
 
     // Torque-free T-handle, no gravity: spun about its intermediate axis it flips, with |L| within 0.1 % and the

@@ -272,6 +272,42 @@ named("Suzanne", mat="Rubber")  # lying on its face
 drop_on_floor(bpy.context.active_object)
 export_obj("mixed_shapes.obj")
 
+# Card house: 40 cards of 2 mm x 0.3 m x 0.4 m, five levels of A-frames (two cards leaning 18 degrees from the
+# vertical, tops touching) with flat cards bridging neighbouring apexes, 15 + 10 + 6 + ... as a user stacks them:
+# every card touching what carries it, none inside another. Friction 0.7 comes from card_house.rlscene.
+reset()
+floor_box()
+half, thick, width, tilt = 0.2, 0.001, 0.15, math.radians(18.0)
+base = 0.0
+for level in range(5):
+    frames = 5 - level
+    x0 = -0.5 * (frames - 1) * 2 * half
+    for f in range(frames):
+        apex = x0 + f * 2 * half
+        dx = half * math.sin(tilt) + thick / math.cos(tilt)
+        z = base + half * math.cos(tilt) + thick * math.sin(tilt)
+        for side in (-1, 1):  # the left card's top leans to +x: a turn of +tilt about Blender's y
+            cube("Card", location=(apex + side * dx, 0, z), scale=(2 * thick, 2 * width, 2 * half),
+                 rotation=(0, -side * tilt, 0))
+    base += 2 * half * math.cos(tilt) + 2 * thick * math.sin(tilt)
+    for f in range(frames - 1):
+        cube("Card", location=(x0 + (f + 0.5) * 2 * half, 0, base + thick), scale=(2 * half, 2 * width, 2 * thick))
+    base += 2 * thick
+export_obj("card_house.obj")
+
+# 1,000 random boxes dropped on a floor box: a 10 x 10 x 10 grid 1.6 m apart, the lowest layer 1 m up, each box
+# 0.3-0.8 m along each side, turned at random and shifted by up to 5 cm (no two overlap at the start).
+reset()
+floor_box()
+rng = __import__("random").Random(7)
+for i in range(1000):
+    gx, gy, layer = i % 10, (i // 10) % 10, i // 100
+    cube("Box", location=((gx - 4.5) * 1.6 + rng.uniform(-0.05, 0.05), (gy - 4.5) * 1.6 + rng.uniform(-0.05, 0.05),
+                          1.0 + 1.6 * layer),
+         scale=(rng.uniform(0.3, 0.8), rng.uniform(0.3, 0.8), rng.uniform(0.3, 0.8)),
+         rotation=(rng.uniform(0, 2 * math.pi), rng.uniform(0, 2 * math.pi), rng.uniform(0, 2 * math.pi)))
+export_obj("boxes1000.obj")
+
 # JSON scenes over the exported OBJ files.
 write_json("slope30_mu07.rlscene", scene([
     obj_body("slope30.obj", "Anchor", friction=0.7, restitution=0.0),
@@ -348,3 +384,15 @@ write_json("projectile_wall.rlscene", scene([floor,
 write_json("projectile_heavy.rlscene", scene([floor,
     {"name": "Box", "shape": {"box": [0.1, 0.1, 0.1]}, "position": [3, 0.1, 0], "mass": 1.0},
     {"name": "Ball", "shape": {"sphere": 0.5}, "position": [0, 0.5, 0], "velocity": [10, 0, 0], "mass": 1000.0}]))
+
+# The card house with card stock's friction, mu 0.7, on the floor too (no bounce).
+write_json("card_house.rlscene", {
+    "format": "rigidlab-scene", "version": 1,
+    "materials": {"Card": {"density": 700.0, "friction": 0.7, "restitution": 0.0}},
+    "bodies": [obj_body("card_house.obj", "Anchor", material="Card")] + [
+        obj_body("card_house.obj", "Card" if i == 0 else "Card.%03d" % i, material="Card") for i in range(40)]})
+
+# Two identical 1 m boxes in the same place, no gravity: they part at no more than the solver's 3 m/s.
+write_json("coincident_boxes.rlscene", scene([
+    {"name": n, "shape": {"box": [0.5, 0.5, 0.5]}, "position": [0, 0, 0]} for n in ("A", "B")],
+    gravity=[0, 0, 0]))

@@ -6,6 +6,10 @@
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #endif
+#if defined(__linux__)
+#include <pthread.h>
+#include <sched.h>
+#endif
 
 namespace rl {
 
@@ -27,6 +31,38 @@ inline void cpuRelax() {
 // interleaved runs of 120 frames). Between steps the workers still go to sleep after it.
 constexpr int kSpins = 20000;
 
+// The CPU the calling thread runs on, or -1 where that is not known.
+int currentCpu() {
+#if defined(__linux__)
+    return sched_getcpu();
+#else
+    return -1;
+#endif
+}
+
+// A new thread starts on its creator's CPU, and Linux moved a worker off member 0's CPU only 10-20 ms later (on this
+// project's two-CPU machines, 2026-12-06): until then every barrier cost a time slice, and the first 7 steps of
+// ramps.obj on two threads took 4.4 ms each against 0.2. So a worker that starts on `cpu` moves off it at once, by
+// an affinity that leaves that CPU out, and then takes back the affinity it had, so that the scheduler places it
+// freely from there on (kept to one CPU throughout, a team's jobs took longer: tests/benchmarks/LOG.md, 2026-12-05).
+void leaveCpu(int cpu) {
+#if defined(__linux__)
+    if (cpu < 0 || sched_getcpu() != cpu)
+        return;
+    cpu_set_t allowed;
+    if (pthread_getaffinity_np(pthread_self(), sizeof allowed, &allowed) != 0 || !CPU_ISSET(cpu, &allowed))
+        return;
+    cpu_set_t others = allowed;
+    CPU_CLR(cpu, &others);
+    if (CPU_COUNT(&others) == 0)
+        return;
+    if (pthread_setaffinity_np(pthread_self(), sizeof others, &others) == 0)
+        pthread_setaffinity_np(pthread_self(), sizeof allowed, &allowed);
+#else
+    (void)cpu;
+#endif
+}
+
 // The team whose member 0 runs on this thread, while it runs a job: its waits are counted (takeLeaderWait()).
 thread_local const ThreadTeam* t_leading = nullptr;
 
@@ -40,8 +76,12 @@ uint64_t nowNs() {
 
 ThreadTeam::ThreadTeam(int size) : m_size(std::max(1, size)) {
     m_workers.reserve(static_cast<size_t>(m_size - 1));
+    const int leaderCpu = currentCpu();
     for (int member = 1; member < m_size; ++member)
-        m_workers.emplace_back([this, member] { work(member); });
+        m_workers.emplace_back([this, member, leaderCpu] {
+            leaveCpu(leaderCpu);
+            work(member);
+        });
 }
 
 ThreadTeam::~ThreadTeam() {
@@ -69,6 +109,10 @@ void ThreadTeam::work(int member) {
         seen = m_jobGeneration.load(std::memory_order_acquire);
         if (m_stop.load(std::memory_order_relaxed))
             return;
+        // A worker woken from its sleep may be placed on the waker's CPU, member 0's: it moves off again, as when it
+        // started. (With the move at the start alone, 3 of 30 runs of ramps.obj on two threads still began with
+        // steps of 4.3 ms.)
+        leaveCpu(m_leaderCpu);
         (*m_job)(member);
         if (m_unfinished.fetch_sub(1, std::memory_order_acq_rel) == 1)
             m_unfinished.notify_all();
@@ -82,6 +126,7 @@ void ThreadTeam::run(const std::function<void(int)>& job) {
     }
     ++m_teamJobs;
     m_job = &job;
+    m_leaderCpu = currentCpu();
     m_unfinished.store(static_cast<uint32_t>(m_size - 1), std::memory_order_relaxed);
     m_jobGeneration.fetch_add(1, std::memory_order_release);
     m_jobGeneration.notify_all();

@@ -56,6 +56,7 @@ private:
     int m_size = 1;
     std::vector<std::thread> m_workers;
     const std::function<void(int)>* m_job = nullptr;
+    int m_leaderCpu = -1; // the CPU member 0 ran on when it started the current job, or -1 (written with m_job)
     std::atomic<uint32_t> m_jobGeneration{0}; // advanced to start a job (or to stop)
     std::atomic<uint32_t> m_unfinished{0};    // workers still in the current job
     std::atomic<uint32_t> m_arrived{0};       // members at the current barrier

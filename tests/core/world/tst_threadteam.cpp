@@ -8,6 +8,10 @@
 #include <chrono>
 #include <thread>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
 using namespace rl;
 
 class TestThreadTeam : public QObject {
@@ -54,6 +58,41 @@ private slots:
         });
         QCOMPARE(wrong, std::vector<int>(2, 0));
     }
+
+#if defined(__linux__)
+    // A worker runs its jobs on a CPU other than member 0's where the process may use two or more: on member 0's
+    // CPU every barrier waits for a time slice. Linux started a new worker on its creator's CPU and moved it 10-20 ms
+    // later, and could wake a sleeping one there too (2026-12-06). Checked on ten new teams, at the first job and
+    // at one after member 1 has gone to sleep.
+    void workersLeaveMemberZerosCpu() {
+        using namespace std::chrono_literals;
+        cpu_set_t allowed;
+        CPU_ZERO(&allowed);
+        QCOMPARE(sched_getaffinity(0, sizeof allowed, &allowed), 0);
+        const int cpus = CPU_COUNT(&allowed);
+        constexpr int kTeams = 10;
+        int apartFirst = 0, apartAfterSleep = 0;
+        for (int t = 0; t < kTeams; ++t) {
+            ThreadTeam team(2);
+            int cpu[2] = {-1, -1};
+            const auto where = [&](int member) { cpu[member] = sched_getcpu(); };
+            team.run(where);
+            apartFirst += cpu[0] != cpu[1] ? 1 : 0;
+            std::this_thread::sleep_for(5ms); // member 1 spins for well under 1 ms, then sleeps
+            team.run(where);
+            apartAfterSleep += cpu[0] != cpu[1] ? 1 : 0;
+        }
+        qInfo("%d CPUs: members on different CPUs in %d of %d first jobs, %d of %d jobs after a sleep", cpus,
+              apartFirst, kTeams, apartAfterSleep, kTeams);
+        if (cpus < 2) {
+            QCOMPARE(apartFirst, 0);
+            return;
+        }
+        // One miss allowed for the host: a CPU may be taken from the process between the move and the job.
+        QVERIFY(apartFirst >= kTeams - 1);
+        QVERIFY(apartAfterSleep >= kTeams - 1);
+    }
+#endif
 
     // Member 0's waits for the others, at barriers and at the end of run(), are counted (the world's TeamPacer reads
     // them); the others' waits are not, nor is the time member 0 spends in the job itself.

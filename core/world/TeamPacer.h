@@ -30,9 +30,15 @@ public:
     static constexpr int kBackoffGrowth = 4;
     static constexpr int kMaxBackoff = 512;
     // A try is this many team steps; the first is not counted (the other members were asleep, their caches cold).
+    // The team comes back if its counted steps took less than kProbeGain of the last steps alone and member 0 waited
+    // in them no more than it may while the team steps (maxWaitShare()). A try in whose first step member 0 waited
+    // longer than kProbeGiveUp of the last steps alone ends there: the others are not running. (Until 2026-12-06 the
+    // first step's whole time was compared: a try that began on a frame costlier than its neighbours was lost and the
+    // backoff grew. In ramps.obj's early frames, every fourth or fifth costs 2-4 times the others; in 10 of 20 runs
+    // of its first 120 frames on two threads, two tries were lost so and the world stepped 84 frames alone, at 2.1
+    // ms a step against 1.2 on the team. With the worker's move of ThreadTeam.cpp, 3 of 20 runs stepped 4 frames
+    // alone and none more: 127 ms for the 120 frames on average against 168. tests/benchmarks/LOG.md, 2026-12-06.)
     static constexpr int kProbeSteps = 3;
-    // The team comes back if its steps in the try took less than this share of the last steps alone. A try whose
-    // first step takes more than kProbeGiveUp times as long as those ends there.
     static constexpr double kProbeGain = 0.9;
     static constexpr double kProbeGiveUp = 1.5;
 

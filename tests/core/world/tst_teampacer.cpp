@@ -59,27 +59,31 @@ private slots:
         QCOMPARE(feed(pacer, TeamPacer::kProbeSteps, 1.4, 0.9, 1.0), TeamPacer::kProbeSteps);
         QVERIFY(!pacer.useTeam());
         QCOMPARE(pacer.backoff(), TeamPacer::kBackoffGrowth * TeamPacer::kFirstBackoff);
-        // Over a long run the tries back off to the most, and the team takes few steps (each try one: its first step
-        // takes twice as long as the steps alone).
+        // Over a long run the tries back off to the most, and the team takes few steps (each try all of its steps).
         const int steps = 20000;
         const int onTeam = feed(pacer, steps, 2.0, 1.4, 1.0);
         QCOMPARE(pacer.backoff(), TeamPacer::kMaxBackoff);
         qInfo("%d of %d steps on a team that does not pay", onTeam, steps);
-        QVERIFY(onTeam <= steps / TeamPacer::kMaxBackoff + 10);
+        QVERIFY(onTeam <= TeamPacer::kProbeSteps * (steps / TeamPacer::kMaxBackoff + 10));
     }
 
     // The other core frees up: the next try finds the team faster than the last steps alone (by more than
-    // kProbeGain), and the world keeps the team, with the backoff back at its first.
+    // kProbeGain) with member 0 waiting no more than half of its steps, and the world keeps the team, with the backoff
+    // back at its first. Otherwise the try is lost.
     void comesBackWhenTheTeamPaysAgain_data() {
         QTest::addColumn<double>("probeStep");
+        QTest::addColumn<double>("waitShare");
         QTest::addColumn<bool>("back");
-        QTest::newRow("team at 0.55 of alone") << 0.55 << true;
-        QTest::newRow("team at 0.85 of alone") << 0.85 << true;
-        QTest::newRow("team at 0.95 of alone") << 0.95 << false;
-        QTest::newRow("team slower") << 1.3 << false;
+        QTest::newRow("team at 0.55 of alone") << 0.55 << 0.1 << true;
+        QTest::newRow("team at 0.85 of alone") << 0.85 << 0.1 << true;
+        QTest::newRow("team at 0.95 of alone") << 0.95 << 0.1 << false;
+        QTest::newRow("team slower") << 1.3 << 0.1 << false;
+        QTest::newRow("team at 0.55 of alone, waits 45 %") << 0.55 << 0.45 << true;
+        QTest::newRow("team at 0.55 of alone, waits 55 %") << 0.55 << 0.55 << false;
     }
     void comesBackWhenTheTeamPaysAgain() {
         QFETCH(double, probeStep);
+        QFETCH(double, waitShare);
         QFETCH(bool, back);
         TeamPacer pacer;
         feed(pacer, TeamPacer::kWindow, 2.0, 1.4, 1.0); // gone alone
@@ -89,22 +93,49 @@ private slots:
         // The first step of the try is not counted: the other thread had to wake.
         pacer.record(1.4, 0.9);
         for (int i = 1; i < TeamPacer::kProbeSteps; ++i)
-            pacer.record(probeStep, 0.1 * probeStep);
+            pacer.record(probeStep, waitShare * probeStep);
         QCOMPARE(pacer.useTeam(), back);
         QCOMPARE(pacer.backoff(),
                  back ? TeamPacer::kFirstBackoff : TeamPacer::kBackoffGrowth * TeamPacer::kFirstBackoff);
         if (back)
-            QCOMPARE(feed(pacer, 500, probeStep, 0.1 * probeStep, 1.0), 500);
+            QCOMPARE(feed(pacer, 500, probeStep, waitShare * probeStep, 1.0), 500);
     }
 
-    // A try whose first step takes more than kProbeGiveUp times the last steps alone ends there: on a busy machine
-    // one such step took 49 ms against 1.4 ms alone (ramps.obj), and two more would follow.
-    void aSlowFirstStepEndsTheTry() {
+    // A try whose first step falls on a frame costlier than the steps alone before it (ramps.obj on two threads: 0.82
+    // and 1.34 ms on the team against 0.31-0.73 alone) goes on while member 0 hardly waits in it: the work grew, not
+    // the waiting. Timed as a whole (until 2026-12-06), both tries were lost and the world stepped 64 frames alone at
+    // 2.1 ms against 1.2 on the team.
+    void aTryStartingOnACostlierFrameGoesOn_data() {
+        QTest::addColumn<double>("firstStep");
+        QTest::addColumn<double>("laterSteps");
+        QTest::addColumn<bool>("back");
+        QTest::newRow("first step 2.6x, then 0.7x") << 2.6 << 0.7 << true;
+        QTest::newRow("first step 2.6x, then 1.0x") << 2.6 << 1.0 << false;
+    }
+    void aTryStartingOnACostlierFrameGoesOn() {
+        QFETCH(double, firstStep);
+        QFETCH(double, laterSteps);
+        QFETCH(bool, back);
+        TeamPacer pacer;
+        feed(pacer, TeamPacer::kWindow, 4.0, 3.5, 1.0); // the worker shared member 0's core: gone alone
+        QVERIFY(!pacer.useTeam());
+        feed(pacer, TeamPacer::kFirstBackoff, 4.0, 3.5, 1.0);
+        QVERIFY(pacer.useTeam());
+        pacer.record(firstStep, 0.1 * firstStep);
+        QVERIFY(pacer.useTeam()); // the try goes on
+        for (int i = 1; i < TeamPacer::kProbeSteps; ++i)
+            pacer.record(laterSteps, 0.1 * laterSteps);
+        QCOMPARE(pacer.useTeam(), back);
+    }
+
+    // A try in whose first step member 0 waits longer than kProbeGiveUp of the last steps alone ends there: on a
+    // busy machine one such step took 49 ms against 1.4 ms alone (ramps.obj), and two more would follow.
+    void aFirstStepSpentWaitingEndsTheTry() {
         TeamPacer pacer;
         feed(pacer, TeamPacer::kWindow, 2.0, 1.4, 1.0);
         feed(pacer, TeamPacer::kFirstBackoff, 2.0, 1.4, 1.0);
         QVERIFY(pacer.useTeam());
-        pacer.record(1.6, 1.2);
+        pacer.record(2.0, 1.6);
         QVERIFY(!pacer.useTeam());
         QCOMPARE(pacer.backoff(), TeamPacer::kBackoffGrowth * TeamPacer::kFirstBackoff);
     }

@@ -34,7 +34,7 @@ public:
     // in them no more than it may while the team steps (maxWaitShare()). A try in whose first step member 0 waited
     // longer than kProbeGiveUp of the last steps alone ends there: the others are not running. (Until 2026-12-06 the
     // first step's whole time was compared: a try that began on a frame costlier than its neighbours was lost and the
-    // backoff grew. In ramps.obj's early frames, every fourth or fifth costs 2-4 times the others; in 10 of 20 runs
+    // backoff grew. In ramps.obj's early frames, every fourth or fifth costs 2-5 times the others; in 10 of 20 runs
     // of its first 120 frames on two threads, two tries were lost so and the world stepped 84 frames alone, at 2.1
     // ms a step against 1.2 on the team. With the worker's move of ThreadTeam.cpp, 3 of 20 runs stepped 4 frames
     // alone and none more: 127 ms for the 120 frames on average against 168. tests/benchmarks/LOG.md, 2026-12-06.)

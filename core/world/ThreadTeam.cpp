@@ -41,9 +41,9 @@ int currentCpu() {
 }
 
 // A new thread starts on its creator's CPU, and Linux moved a worker off member 0's CPU only 10-20 ms later (on this
-// project's two-CPU machines, 2026-12-06): until then every barrier cost a time slice, and the first 7 steps of
-// ramps.obj on two threads took 4.4 ms each against 0.2. So a worker that starts on `cpu` moves off it at once, by
-// an affinity that leaves that CPU out, and then takes back the affinity it had, so that the scheduler places it
+// project's two-CPU machines, 2026-12-06): until then every barrier cost a time slice, and the first steps of
+// ramps.obj on two threads took up to 4.4 ms each against 0.2. So a worker that starts on `cpu` moves off it at once,
+// by an affinity that leaves that CPU out, and then takes back the affinity it had, so that the scheduler places it
 // freely from there on (kept to one CPU throughout, a team's jobs took longer: tests/benchmarks/LOG.md, 2026-12-05).
 void leaveCpu(int cpu) {
 #if defined(__linux__)

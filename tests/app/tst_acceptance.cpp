@@ -443,7 +443,8 @@ private slots:
     // Re-bakes hash identically, and so does a bake on 2 threads (CSV and .bake).
     void rebakeHashes_data() {
         QTest::addColumn<QString>("scene");
-        for (const char* s : {"tower40.obj", "jenga30.obj", "mixed_shapes.obj", "drop_cube_e05.rlscene"})
+        for (const char* s : {"tower40.obj", "jenga30.obj", "mixed_shapes.obj", "drop_cube_e05.rlscene",
+                              "card_house.rlscene", "boxes1000.obj"})
             QTest::newRow(s) << QString::fromLatin1(s);
     }
     void rebakeHashes() {

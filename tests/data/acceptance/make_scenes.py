@@ -273,8 +273,8 @@ drop_on_floor(bpy.context.active_object)
 export_obj("mixed_shapes.obj")
 
 # Card house: 40 cards of 2 mm x 0.3 m x 0.4 m, five levels of A-frames (two cards leaning 18 degrees from the
-# vertical, tops touching) with flat cards bridging neighbouring apexes, 15 + 10 + 6 + ... as a user stacks them:
-# every card touching what carries it, none inside another. Friction 0.7 comes from card_house.rlscene.
+# vertical, tops touching) with flat cards bridging neighbouring apexes (14, 11, 8, 5 and 2 cards a level), as a user
+# stacks them: every card touching what carries it, none inside another. Friction 0.7 comes from card_house.rlscene.
 reset()
 floor_box()
 half, thick, width, tilt = 0.2, 0.001, 0.15, math.radians(18.0)

@@ -23,6 +23,15 @@ int feed(TeamPacer& pacer, int steps, double teamStep, double teamWait, double a
     return onTeam;
 }
 
+// Takes a new pacer through a window of team steps in which member 0 waited `teamWait` of `teamStep` s (more than
+// half: it goes alone) and the first backoff alone, to the first step of a try. Whether it went alone and then tries.
+bool toTheFirstTry(TeamPacer& pacer, double teamStep, double teamWait) {
+    feed(pacer, TeamPacer::kWindow, teamStep, teamWait, 1.0);
+    const bool wentAlone = !pacer.useTeam();
+    feed(pacer, TeamPacer::kFirstBackoff, teamStep, teamWait, 1.0);
+    return wentAlone && pacer.useTeam();
+}
+
 } // namespace
 
 class TestTeamPacer : public QObject {
@@ -86,10 +95,7 @@ private slots:
         QFETCH(double, waitShare);
         QFETCH(bool, back);
         TeamPacer pacer;
-        feed(pacer, TeamPacer::kWindow, 2.0, 1.4, 1.0); // gone alone
-        QVERIFY(!pacer.useTeam());
-        feed(pacer, TeamPacer::kFirstBackoff, 2.0, 1.4, 1.0);
-        QVERIFY(pacer.useTeam());
+        QVERIFY(toTheFirstTry(pacer, 2.0, 1.4));
         // The first step of the try is not counted: the other thread had to wake.
         pacer.record(1.4, 0.9);
         for (int i = 1; i < TeamPacer::kProbeSteps; ++i)
@@ -117,10 +123,7 @@ private slots:
         QFETCH(double, laterSteps);
         QFETCH(bool, back);
         TeamPacer pacer;
-        feed(pacer, TeamPacer::kWindow, 4.0, 3.5, 1.0); // the worker shared member 0's core: gone alone
-        QVERIFY(!pacer.useTeam());
-        feed(pacer, TeamPacer::kFirstBackoff, 4.0, 3.5, 1.0);
-        QVERIFY(pacer.useTeam());
+        QVERIFY(toTheFirstTry(pacer, 4.0, 3.5)); // the worker shared member 0's core: gone alone
         pacer.record(firstStep, 0.1 * firstStep);
         QVERIFY(pacer.useTeam()); // the try goes on
         for (int i = 1; i < TeamPacer::kProbeSteps; ++i)
@@ -132,9 +135,7 @@ private slots:
     // busy machine one such step took 49 ms against 1.4 ms alone (ramps.obj), and two more would follow.
     void aFirstStepSpentWaitingEndsTheTry() {
         TeamPacer pacer;
-        feed(pacer, TeamPacer::kWindow, 2.0, 1.4, 1.0);
-        feed(pacer, TeamPacer::kFirstBackoff, 2.0, 1.4, 1.0);
-        QVERIFY(pacer.useTeam());
+        QVERIFY(toTheFirstTry(pacer, 2.0, 1.4));
         pacer.record(2.0, 1.6);
         QVERIFY(!pacer.useTeam());
         QCOMPARE(pacer.backoff(), TeamPacer::kBackoffGrowth * TeamPacer::kFirstBackoff);

@@ -327,11 +327,17 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
     w.m_contactPairs.reserve(16 * n);
     w.m_island.resize(n);
     std::iota(w.m_island.begin(), w.m_island.end(), 0u);
+    w.m_startFromPrincipal.resize(n);
+    for (size_t i = 0; i < n; ++i)
+        w.m_startFromPrincipal[i] =
+            glm::normalize(w.m_state.info[i].shapeFromPrincipal * glm::conjugate(w.m_initialShapeOrientation[i]));
     return w;
 }
 
 Quat World::rotationSinceStart(size_t i) const {
-    return glm::normalize(shapeOrientation(i) * glm::conjugate(m_initialShapeOrientation[i]));
+    // orientation * shapeFromPrincipal * conjugate(initial shape orientation), the last two taken together once in
+    // create(): each frame a bake records reads two arrays instead of the bodies' bookkeeping.
+    return glm::normalize(m_state.orientation[i] * m_startFromPrincipal[i]);
 }
 
 void World::step() {

@@ -474,6 +474,7 @@ private:
     std::vector<Real> m_friction, m_restitution;
     std::vector<Vec3> m_vertexMeanOffset;
     std::vector<Quat> m_initialShapeOrientation;
+    std::vector<Quat> m_startFromPrincipal; // rotationSinceStart() = orientation * this
     std::vector<ProxyKey> m_proxies;
     std::vector<Real> m_sleepTime;
     std::vector<Real> m_islandSleepTime; // updateSleep(): per island root, the least sleep time of its awake bodies

@@ -437,8 +437,9 @@ private:
     // kRoundsBeyond (groundPushedBodies()); the contact may have been apart. Reads the state.
     bool movedInto(uint32_t slot, Real slop, const Transform& xfA, const Transform& xfB, bool inRounds = false) const;
     // How deep (negative) a contact may be after the step: -slop, or for one that began the step deeper than
-    // WorldTuning::separateDeepStart (or at all, fromStart), its depth then less slop.
-    Real separationFloor(const Manifold& m, Real slop, bool fromStart = false) const;
+    // WorldTuning::separateDeepStart (or at all, fromStart, unless one of its bodies is still), its depth then less
+    // slop.
+    Real separationFloor(uint32_t slot, Real slop, bool fromStart = false) const;
     // The contact's bodies collided again and pushed apart (positions only) until no point is deeper than
     // separationFloor(), at most two pushes; returns the pushes. With `grounded` (per body; groundPushedBodies()), a
     // still or grounded body under one that is not is not moved, and grounds that one.

@@ -500,6 +500,7 @@ private:
     std::vector<uint32_t> m_turnedContacts;
     std::vector<uint8_t> m_movedInto;
     std::vector<uint32_t> m_secondPushed; // separateMovedPairs(): the bodies its second pass pushed
+    std::vector<uint32_t> m_struck;       // separateMovedPairs(): the bodies struck faster than their margins allowed
     // groundPushedBodies(): per body, whether this round pushed it and whether it is grounded; the slots of the
     // pairs to test.
     std::vector<uint8_t> m_pushedNow, m_grounded;

@@ -648,7 +648,7 @@ void World::separateMovedPairs(Real slop) {
         if (!m_state.isMoving(i))
             continue;
         const Real spin = glm::length(m_state.angularVelocity[i]) * m_radius[i];
-        m_turnStep[i] = spin * dt;
+        m_turnStep[i] = spin / m_fps;
         any = any || m_turnStep[i] > 0.5 * m_tuning.separateTurn;
         if ((glm::length(m_state.linearVelocity[i]) + spin - m_reach[i] - m_pushSpeed[i]) * dt >
             m_tuning.speculativeDistance)

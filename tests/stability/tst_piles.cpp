@@ -83,9 +83,9 @@ private slots:
 
     // Issue 4's "none below the floor", by the lowest point of any box, in piles laid out as boxes1000.obj. The
     // pushes after the sweeps (World::separateMovedPairs()) drove boxes on the floor into it again step after step
-    // while the rounds that take them out kept each one's depth at the step's start as its floor: these piles went
-    // 12.3-14.6 mm into it (2026-12-06; 12 of 48 such piles beyond 1 cm, at most 8.5 mm after). Now at most the pushes'
-    // slop and the rounds' allowance, 5 mm. Before (the same rows): -11.8, -7.0, -10.4 and -9.5 mm.
+    // while the rounds that take them out kept each one's depth at the step's start as its floor: piles of this
+    // layout went up to 14.6 mm into it (2026-12-06; 12 of 48 beyond 1 cm, at most 8.5 mm after). Now at most the
+    // pushes' slop and the rounds' allowance, 5 mm. Before, these rows: -11.8, -7.0, -10.4 and -9.5 mm.
     void gridPilesStayOutOfTheFloor_data() {
         QTest::addColumn<unsigned>("seed");
         QTest::addColumn<double>("spacing");

@@ -232,7 +232,10 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
         w.m_friction.push_back(material.friction);
         w.m_restitution.push_back(material.restitution);
         w.m_vertexMeanOffset.push_back(props->vertexMean - props->com);
-        w.m_initialShapeOrientation.push_back(orientation);
+        // rotationSinceStart() = orientation * shapeFromPrincipal * conjugate(this starting orientation): the last two
+        // taken together once here.
+        w.m_startFromPrincipal.push_back(
+            glm::normalize(w.m_state.info[*index].shapeFromPrincipal * glm::conjugate(orientation)));
         w.m_minExtent.push_back(w.m_shapes.back().minExtent());
         {
             const Aabb bounds = w.m_shapes.back().localBounds();
@@ -327,16 +330,11 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
     w.m_contactPairs.reserve(16 * n);
     w.m_island.resize(n);
     std::iota(w.m_island.begin(), w.m_island.end(), 0u);
-    w.m_startFromPrincipal.resize(n);
-    for (size_t i = 0; i < n; ++i)
-        w.m_startFromPrincipal[i] =
-            glm::normalize(w.m_state.info[i].shapeFromPrincipal * glm::conjugate(w.m_initialShapeOrientation[i]));
     return w;
 }
 
 Quat World::rotationSinceStart(size_t i) const {
-    // orientation * shapeFromPrincipal * conjugate(initial shape orientation), the last two taken together once in
-    // create(): each frame a bake records reads two arrays instead of the bodies' bookkeeping.
+    // Each frame a bake records reads two arrays, not the bodies' bookkeeping (the constant factors: create()).
     return glm::normalize(m_state.orientation[i] * m_startFromPrincipal[i]);
 }
 
@@ -654,15 +652,10 @@ void World::separateMovedPairs(Real slop) {
             m_tuning.speculativeDistance)
             m_struck.push_back(i);
     }
+    // (Without a turn above half separateTurn no contact's two turns pass separateTurn: with struck bodies alone,
+    // nothing below is tested or pushed until their rounds.)
     if (!any && m_struck.empty())
         return;
-    if (!any) {
-        m_separated.assign(bodies, 0);
-        for (const uint32_t i : m_struck)
-            m_separated[i] = 1;
-        m_profile.count(Counter::SeparatedPairs, groundPushedBodies(slop));
-        return;
-    }
     // The touching contacts whose two turns together move a point by more than separateTurn. The tests take each
     // body's transform again rather than share one list of them: on two threads with the cores far apart, a list
     // taken by member 0 made the stage slower over boxes1000's first 120 frames (26.2-27.1 ms against 23.4-23.6

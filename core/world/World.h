@@ -474,7 +474,6 @@ private:
     std::vector<Shape> m_shapes;
     std::vector<Real> m_friction, m_restitution;
     std::vector<Vec3> m_vertexMeanOffset;
-    std::vector<Quat> m_initialShapeOrientation;
     std::vector<Quat> m_startFromPrincipal; // rotationSinceStart() = orientation * this
     std::vector<ProxyKey> m_proxies;
     std::vector<Real> m_sleepTime;

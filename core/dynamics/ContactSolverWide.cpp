@@ -961,7 +961,10 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
     L3<V> rA[4], rB[4];
     V baseSeparation[4], mass[4], impulse[4], leverArm[4], relativeVelocity[4];
     Mask valid[4];
-    Mask impact = zero < zero;
+    Mask impact = zero < zero, blow = zero < zero;
+    const bool blows = m_settings.blowPasses > 0 || m_settings.blowShockPasses > 0;
+    const V blowSpeed = splat<W>(-m_settings.blowSpeed);
+    const V reach = splat<W>(m_settings.step > 0.0 ? m_settings.step : m_h);
     for (uint32_t k = 0; k < at.pointCount; ++k) {
         valid[k] = splat<W>(static_cast<Real>(k)) < pointCount;
         rA[k] = rounded<W>(position[k] - anchorBase);
@@ -974,6 +977,9 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         impulse[k] = warm ? impulseIn[k] : zero;
         relativeVelocity[k] = dot(normal, (vB + cross(wB, rB[k])) - (vA + cross(wA, rA[k])));
         impact = impact | (valid[k] & (relativeVelocity[k] < approaching));
+        if (blows) // as setUpConstraint()
+            blow = blow | (valid[k] & (relativeVelocity[k] < blowSpeed) &
+                           (separation[k] < (zero - relativeVelocity[k]) * reach));
     }
 
     // The friction centre, weighted as setUpConstraint() weighs it.
@@ -1080,6 +1086,7 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         c.pointCount = m.pointCount;
         c.approachAcceleration = approachAcceleration[l];
         c.impact = (batch.impacts >> l) & 1u;
+        c.blow = blow[l] != 0;
         c.anchorOffset = laneOf(anchorOffset, l);
         for (int k = 0; k < m.pointCount; ++k) {
             ContactConstraint::Point& p = c.points[k];
@@ -1113,6 +1120,8 @@ RL_LANES_INLINE bool ContactSolver::setUpBatch(BatchStore<W>& store, const SetUp
         for (int k = 0; k < 4; ++k)
             order[static_cast<size_t>(k)] = static_cast<uint8_t>(k);
         m_laneOf[i] = static_cast<uint32_t>(b * W + l);
+        if (blows)
+            m_struck[i] = blow[l] != 0 ? 1 : 0;
         if (impact[l] != 0)
             stableSortSmall(order.data(), order.data() + m.pointCount,
                             [&](uint8_t x, uint8_t y) { return m.points[x].separation < m.points[y].separation; });

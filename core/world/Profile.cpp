@@ -21,11 +21,11 @@ constexpr std::string_view kStageNames[kStageCount] = {"update_broadphase",
                                                        "sleep",
                                                        "store_frame"};
 constexpr std::string_view kCounterNames[kCounterCount] = {
-    "pairs",           "pairs_tested",     "manifolds",      "contact_points",     "normal_rows",
-    "friction_rows",   "restitution_rows", "swept_batches",  "awake_bodies",       "integrated_bodies",
-    "ccd_bodies",      "ccd_hits",         "steps",          "islands_shared_out", "islands_cut",
-    "solved_in_parts", "part_imbalance",   "steps_alone",    "team_steps",         "islands_in_body_order",
-    "pushed_contacts", "bounded_bounces",  "separated_pairs"};
+    "pairs",           "pairs_tested",     "manifolds",       "contact_points",     "normal_rows",
+    "friction_rows",   "restitution_rows", "swept_batches",   "awake_bodies",       "integrated_bodies",
+    "ccd_bodies",      "ccd_hits",         "steps",           "islands_shared_out", "islands_cut",
+    "solved_in_parts", "part_imbalance",   "steps_alone",     "team_steps",         "islands_in_body_order",
+    "pushed_contacts", "bounded_bounces",  "separated_pairs", "blow_rows"};
 } // namespace
 
 std::string_view stageName(Stage stage) {

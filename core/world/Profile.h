@@ -58,6 +58,7 @@ enum class Counter {
     PushedContacts,     // contacts whose points World::pushOutOfContacts() moved a body out of
     BoundedBounces,     // bounces the restitution pass took back to the energy of free flight (ContactSolver::launch())
     SeparatedPairs,     // pushes World::separateMovedPairs() made (at most two a pair in each of its two passes)
+    BlowRows,           // normal rows solved by the blows' passes before the substeps (ContactSolver::absorbBlows())
     Count
 };
 inline constexpr int kCounterCount = static_cast<int>(Counter::Count);

@@ -298,6 +298,8 @@ Result<World> World::create(const Scene& scene, const WorldOptions& options) {
                                                                                     : 0.0;
     w.m_solverSettings.friction = fx.has(Effect::Friction);
     w.m_solverSettings.restitution = fx.has(Effect::Restitution);
+    w.m_solverSettings.blowPasses = w.m_tuning.blowPasses;
+    w.m_solverSettings.blowShockPasses = w.m_tuning.blowShockPasses;
 
     BroadPhaseSettings broad;
     broad.dynamicTree.margin = w.m_tuning.aabbMargin;
@@ -1829,6 +1831,7 @@ void World::countSolverRows() {
     m_profile.count(Counter::RestitutionRows, sc.restitutionRows);
     m_profile.count(Counter::BoundedBounces, sc.boundedBounces);
     m_profile.count(Counter::SweptBatches, sc.sweptBatches);
+    m_profile.count(Counter::BlowRows, sc.blowRows);
 }
 
 void World::solveGroup(std::span<const uint32_t> group, int refinement) {
@@ -2372,6 +2375,13 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
                    scratch.centers, h, settings,
                    scratch.islandsCut > 0 ? std::span<const uint8_t>(scratch.part) : std::span<const uint8_t>(),
                    parallelFor, scratch.held, plan);
+    // The step's blows, taken out of the velocities before the substeps (ContactSolver::absorbBlows()), by this thread
+    // whatever the team: the same numbers.
+    if (solver.hasBlows()) {
+        toSolver(allLocal);
+        solver.absorbBlows(bodies);
+        fromSolver(allLocal);
+    }
 
     // The team solves the group together: bodies are split evenly for the integration, and each level of the
     // solver's schedule is split evenly for the contacts, with a barrier after every level. Every body sees the

@@ -116,13 +116,15 @@ struct ContactSolverSettings {
     // part of it in the accumulated impulses, which the next substeps' warm starts give again: a 0.5 m box coming down
     // at 10 m/s onto an equal box resting on the floor (restitution 0) sent both up at 0.84 m/s, 43 mm high, and onto
     // a stack of four, the stack at 1.5 m/s. So the manifolds struck this step (a point closing faster than blowSpeed
-    // from near enough to meet within the step) whose moving body has another manifold, and the manifolds that bear
-    // each struck body up, and those under them down to the ground (kBlowDepth bodies down), are first solved as
-    // collisions from the velocities at the step start (absorbBlows()): blowPasses sweeps over them, then
-    // blowShockPasses sweeps from the ground up with each lower body held still (shock propagation, Guendelman et
-    // al. 2003), rigid, from zero impulses that are then dropped. The substeps find the blow taken and warm start with
-    // the last step's loads only. Manifolds that bounce (restitution above 0, with restitution on) are left to the
-    // substeps and the restitution pass. 0 and 0: none. (The world sets 4 and 2: WorldTuning::blowPasses.)
+    // from near enough to meet within the step) between two moving bodies, or whose moving body has another manifold,
+    // and the manifolds that bear each struck body up, and those under them down to the ground (kBlowDepth bodies
+    // down), are first solved as collisions from the velocities at the step start (absorbBlows()): blowPasses sweeps
+    // over them, then blowShockPasses sweeps from the ground up with each lower body held still under a manifold
+    // within 18 degrees of vertical (shock propagation, Guendelman et al. 2003); rigid, each manifold's rows as one
+    // block, from zero impulses that are then dropped; a kind of pass that would leave the bodies more kinetic energy
+    // is undone. The substeps find the blow taken and warm start with the last step's loads only. Manifolds that
+    // bounce (restitution above 0, with restitution on) are left to the substeps and the restitution pass. 0 and 0:
+    // none. (The world sets 4 and 2: WorldTuning::blowPasses.)
     Real blowSpeed = 1.0;
     int blowPasses = 0;
     int blowShockPasses = 0;
@@ -574,7 +576,8 @@ private:
     // each lower body held (m_shocks).
     std::vector<ContactConstraint> m_blows, m_shocks;
     std::vector<uint32_t> m_blowIndex;
-    // findBlows()' scratch: per body, its constraints (m_blowFirst, m_blowList), marks, and levels and heights.
+    // findBlows()' scratch: per body, its constraints (m_blowFirst, m_blowList), its level in the walk down and its
+    // height; per constraint, whether it is taken.
     std::vector<uint32_t> m_blowFirst, m_blowList, m_blowLevel, m_blowHeight;
     std::vector<uint8_t> m_blowTaken;
     // absorbBlows()' scratch: its bodies' inertia and velocities.

@@ -134,9 +134,10 @@ struct WorldTuning {
     int relaxIterations = 1;
     // The blows' passes before the substeps (ContactSolverSettings::blowPasses, blowShockPasses). Measured
     // 2026-12-06: a 0.5 m box coming down at 10 m/s onto a stack of one, two or four equal boxes on the floor
-    // (restitution 0) sent the stack up at 0.84, 1.38 and 1.50 m/s with none, 0.002, 0.078 and 0.022 m/s with 4 and
-    // 2. (Swept again in every substep instead, 4 more sweeps over the struck manifolds and their bodies' others took
-    // ramps.obj's solve stage 19 % longer and left the stacks of two and four at 1.10 and 1.38 m/s.)
+    // (restitution 0) sent the stack up at 0.84, 1.38 and 1.50 m/s with none, at most 0.001 m/s with 4 and 2 (with 4
+    // and none, 0.000, 0.40 and 1.0 m/s; with 16 and none, 0.000, 0.001 and 0.30). (Swept again in every substep
+    // instead, 4 more sweeps over the struck manifolds and their bodies' others took ramps.obj's solve stage 19 %
+    // longer and left the stacks of two and four at 1.10 and 1.38 m/s.)
     int blowPasses = 4;
     int blowShockPasses = 2;
     // CCD sweeps a body that moves more than this fraction of its smallest size in one step.

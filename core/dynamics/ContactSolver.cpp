@@ -274,6 +274,39 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
     }
 }
 
+// The kinetic energy of body b moving at v and turning at w (its inverse inertia is in world axes).
+Real kineticEnergy(const SolverBody& b, const Vec3& v, const Vec3& w) {
+    if (!(b.invMass > 0.0))
+        return 0.0;
+    Real e = 0.5 * glm::dot(v, v) / b.invMass;
+    if (w != Vec3(0.0) && glm::determinant(b.invInertia) > 0.0)
+        e += 0.5 * glm::dot(w, glm::inverse(b.invInertia) * w);
+    return e;
+}
+
+// Each moving body's constraints, for constraints constraintAt(0) .. constraintAt(count - 1) between bodies
+// bodiesOf(i) (entry 0, the still side, lists none): body x's are list[first[x]] .. list[first[x + 1] - 1], in the
+// order given. fill is scratch.
+template <class ConstraintAt, class BodiesOf>
+void listByBody(size_t bodyCount, size_t count, ConstraintAt&& constraintAt, BodiesOf&& bodiesOf,
+                std::vector<uint32_t>& first, std::vector<uint32_t>& list, std::vector<uint32_t>& fill) {
+    first.assign(bodyCount + 1, 0);
+    for (size_t k = 0; k < count; ++k)
+        for (const uint32_t body : bodiesOf(constraintAt(k)))
+            if (body != 0)
+                ++first[body + 1];
+    for (size_t x = 1; x <= bodyCount; ++x)
+        first[x] += first[x - 1];
+    list.resize(first[bodyCount]);
+    fill.assign(first.begin(), first.end() - 1);
+    for (size_t k = 0; k < count; ++k) {
+        const uint32_t i = constraintAt(k);
+        for (const uint32_t body : bodiesOf(i))
+            if (body != 0)
+                list[fill[body]++] = i;
+    }
+}
+
 } // namespace
 
 void shareOut(const ContactSolver::ParallelFor& parallelFor, size_t count,
@@ -967,27 +1000,19 @@ void ContactSolver::findBlows(const SetUpInputs& inputs) {
     const size_t bodyCount = inputs.bodies.size();
     // A manifold that bounces is left to the substeps and the restitution pass.
     const auto bounces = [&](size_t i) { return m_settings.restitution && inputs.restitution[i] > 0.0; };
-    // Each body's constraints, listed.
-    m_blowFirst.assign(bodyCount + 1, 0);
-    for (size_t i = 0; i < m_count; ++i) {
-        ++m_blowFirst[inputs.indexA[i] + 1];
-        ++m_blowFirst[inputs.indexB[i] + 1];
-    }
-    for (size_t x = 0; x < bodyCount; ++x)
-        m_blowFirst[x + 1] += m_blowFirst[x];
-    m_blowList.resize(2 * m_count);
-    m_blowLevel.assign(m_blowFirst.begin(), m_blowFirst.end() - 1); // as the next free slot of each body's list
-    for (size_t i = 0; i < m_count; ++i) {
-        m_blowList[m_blowLevel[inputs.indexA[i]]++] = static_cast<uint32_t>(i);
-        m_blowList[m_blowLevel[inputs.indexB[i]]++] = static_cast<uint32_t>(i);
-    }
+    listByBody(
+        bodyCount, m_count, [](size_t k) { return static_cast<uint32_t>(k); },
+        [&](uint32_t i) {
+            return std::array<uint32_t, 2>{inputs.indexA[i], inputs.indexB[i]};
+        },
+        m_blowFirst, m_blowList, m_blowLevel);
     const auto constraintsOf = [&](uint32_t x) { return m_blowFirst[x + 1] - m_blowFirst[x]; };
     // The struck constraints that hand a blow on (two moving bodies, or a moving body with another constraint) and
     // their moving bodies, level 0 of the walk down.
     constexpr uint32_t kNone = 0xffffffffu;
     m_blowTaken.assign(m_count, 0);
     m_blowLevel.assign(bodyCount, kNone);
-    std::vector<uint32_t>& queue = m_blowHeight; // (the heights come after the walk)
+    std::vector<uint32_t>& queue = m_blowQueue;
     queue.clear();
     for (size_t i = 0; i < m_count; ++i) {
         if (m_struck[i] == 0 || bounces(i))
@@ -1079,8 +1104,8 @@ void ContactSolver::findBlows(const SetUpInputs& inputs) {
     }
     // From the ground up (the lower height of each constraint's bodies, then manifold order), each constraint
     // between two moving bodies at different heights holding its lower body still where it bears the other up.
-    std::vector<std::pair<uint32_t, uint32_t>> order; // (height, position in m_blowIndex)
-    order.reserve(m_blowIndex.size());
+    std::vector<std::pair<uint32_t, uint32_t>>& order = m_blowOrder; // (height, position in m_blowIndex)
+    order.clear();
     for (size_t k = 0; k < m_blowIndex.size(); ++k) {
         const uint32_t i = m_blowIndex[k];
         order.emplace_back(std::min(height[inputs.indexA[i]], height[inputs.indexB[i]]), static_cast<uint32_t>(k));
@@ -1435,7 +1460,7 @@ void ContactSolver::absorbBlows(std::span<SolverBody> bodies) {
     // more kinetic energy than they had are undone (the regular ones once over 600 frames of the pile of 1,000 boxes
     // where this was traced, 2026-12-06).
     // The moving bodies of those constraints, each once, and their velocities before each kind of pass.
-    std::vector<uint32_t>& moved = m_blowLevel; // (findBlows()' scratch, done with)
+    std::vector<uint32_t>& moved = m_blowQueue; // (findBlows()' scratch, done with)
     moved.clear();
     for (const ContactConstraint& c : m_blows)
         for (const uint32_t x : {c.bodyA, c.bodyB})
@@ -1443,21 +1468,11 @@ void ContactSolver::absorbBlows(std::span<SolverBody> bodies) {
                 moved.push_back(x);
     std::sort(moved.begin(), moved.end());
     moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
-    std::vector<Mat3>& inertia = m_blowInertia;
-    inertia.resize(moved.size());
-    for (size_t k = 0; k < moved.size(); ++k) {
-        const Mat3& inverse = bodies[moved[k]].invInertia;
-        inertia[k] = glm::determinant(inverse) > 0.0 ? glm::inverse(inverse) : Mat3(0.0);
-    }
     const auto energy = [&] {
         Real e = 0.0;
-        for (size_t k = 0; k < moved.size(); ++k) {
-            const SolverBody& body = bodies[moved[k]];
-            if (body.invMass > 0.0)
-                e += glm::dot(body.v, body.v) / body.invMass;
-            e += glm::dot(body.w, inertia[k] * body.w);
-        }
-        return 0.5 * e;
+        for (const uint32_t x : moved)
+            e += kineticEnergy(bodies[x], bodies[x].v, bodies[x].w);
+        return e;
     };
     std::vector<std::pair<Vec3, Vec3>>& saved = m_blowSaved;
     saved.resize(moved.size());
@@ -1514,16 +1529,6 @@ uint8_t struckPoints(const ContactConstraint& c, Real threshold) {
 // Whether c holds a side still or makes it heavier (ContactConstraint::scaleA, scaleB).
 bool holdsASide(const ContactConstraint& c) {
     return c.scaleA != 1.0 || c.scaleB != 1.0;
-}
-
-// The kinetic energy of body b moving at v and turning at w (its inverse inertia is in world axes).
-Real kineticEnergy(const SolverBody& b, const Vec3& v, const Vec3& w) {
-    if (!(b.invMass > 0.0))
-        return 0.0;
-    Real e = 0.5 * glm::dot(v, v) / b.invMass;
-    if (w != Vec3(0.0) && glm::determinant(b.invInertia) > 0.0)
-        e += 0.5 * glm::dot(w, glm::inverse(b.invInertia) * w);
-    return e;
 }
 
 // A chain's collisions one after the other take at most this many blows on one record: with e < 1 each blow passes
@@ -1778,21 +1783,14 @@ void ContactSolver::bounceChains(std::span<SolverBody> bodies, std::span<const u
     thread_local std::vector<std::array<Real, 4>> given, shift;
     thread_local std::vector<Launch> launches;
     // Each moving body's records.
-    first.assign(n + 1, 0);
-    for (const uint32_t i : records)
-        for (const uint32_t body : {m_constraints[i].bodyA, m_constraints[i].bodyB})
-            if (body != 0)
-                ++first[body + 1];
-    for (size_t k = 1; k <= n; ++k)
-        first[k] += first[k - 1];
-    adjacent.resize(first[n]);
     {
         thread_local std::vector<uint32_t> fill;
-        fill.assign(first.begin(), first.end() - 1);
-        for (const uint32_t i : records)
-            for (const uint32_t body : {m_constraints[i].bodyA, m_constraints[i].bodyB})
-                if (body != 0)
-                    adjacent[fill[body]++] = i;
+        listByBody(
+            n, records.size(), [&](size_t k) { return records[k]; },
+            [&](uint32_t i) {
+                return std::array<uint32_t, 2>{m_constraints[i].bodyA, m_constraints[i].bodyB};
+            },
+            first, adjacent, fill);
     }
     model.resize(n);
     model[0] = bodies[0];

@@ -577,14 +577,14 @@ private:
     std::vector<ContactConstraint> m_blows, m_shocks;
     std::vector<uint32_t> m_blowIndex;
     // findBlows()' scratch: per body, its constraints (m_blowFirst, m_blowList), its level in the walk down and its
-    // height; per constraint, whether it is taken.
-    std::vector<uint32_t> m_blowFirst, m_blowList, m_blowLevel, m_blowHeight;
+    // height; the walk's queue (absorbBlows(): the bodies it moves); per constraint, whether it is taken; the order
+    // from the ground up.
+    std::vector<uint32_t> m_blowFirst, m_blowList, m_blowLevel, m_blowHeight, m_blowQueue;
     std::vector<uint8_t> m_blowTaken;
-    // absorbBlows()' scratch: its bodies' inertia and velocities.
-    std::vector<Mat3> m_blowInertia;
-    std::vector<std::pair<Vec3, Vec3>> m_blowSaved;
-    std::vector<BatchLayout> m_batchLayout; // per batch (buildBatches())
-    std::vector<uint32_t> m_laneOf;         // per constraint: its batch times the lane width, plus its lane
+    std::vector<std::pair<uint32_t, uint32_t>> m_blowOrder;
+    std::vector<std::pair<Vec3, Vec3>> m_blowSaved; // absorbBlows()' velocities before a kind of pass
+    std::vector<BatchLayout> m_batchLayout;         // per batch (buildBatches())
+    std::vector<uint32_t> m_laneOf;                 // per constraint: its batch times the lane width, plus its lane
     std::vector<uint32_t> m_solveOrder; // constraint indices, level by level (grouped within a level: buildBatches())
     std::vector<uint8_t> m_segment;     // per constraint: its part, or kBoundarySegment
     size_t m_segmentLevelStart[kParts + 2] = {};

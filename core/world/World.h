@@ -443,7 +443,15 @@ private:
     // Whether the contact's bodies, placed by xfA and xfB (where the step left them), collided again, have a point
     // deeper than separationFloor() (separateMovedPairs()), or inRounds, than separationFloor(fromStart) less
     // kRoundsBeyond (groundPushedBodies()); the contact may have been apart. Reads the state.
-    bool movedInto(uint32_t slot, Real slop, const Transform& xfA, const Transform& xfB, bool inRounds = false) const;
+    // Where it has one, `collision` (if given) gets the collision that found it.
+    bool movedInto(uint32_t slot, Real slop, const Transform& xfA, const Transform& xfB, bool inRounds = false,
+                   Manifold* collision = nullptr) const;
+    // movedInto() of the touching contacts at the given positions in m_touchingContacts, where the bodies are now:
+    // deep[t] for contacts[t], and collisions[t] where it is set (both sized by the caller). On the team if it has one
+    // and there are enough; each test alone, so the results are the same.
+    void testMovedInto(std::span<const uint32_t> contacts, Real slop, std::vector<uint8_t>& deep,
+                       std::vector<Manifold>& collisions);
+    static constexpr size_t kSeparateChunk = 16; // tests per claim of testMovedInto()'s team
     // How deep (negative) a contact may be after the step: -slop, or for one that began the step deeper than
     // WorldTuning::separateDeepStart (or at all, fromStart, unless one of its bodies is still), its depth then less
     // slop.
@@ -451,7 +459,10 @@ private:
     // The contact's bodies collided again and pushed apart (positions only) until no point is deeper than
     // separationFloor(), at most two pushes; returns the pushes. With `grounded` (per body; groundPushedBodies()), a
     // still or grounded body under one that is not is not moved, and grounds that one.
-    int separatePair(uint32_t slot, Real slop, std::vector<uint8_t>* grounded = nullptr);
+    // `collision`, if given, is the pair's collision where its bodies are now, which the first push then takes
+    // instead of colliding them again.
+    int separatePair(uint32_t slot, Real slop, std::vector<uint8_t>* grounded = nullptr,
+                     const Manifold* collision = nullptr);
     // After separateMovedPairs()'s pushes: the pushed bodies out of the still bodies they went into, and then
     // rounds over the pairs of the bodies that moved; returns the pushes.
     uint64_t groundPushedBodies(Real slop);
@@ -507,7 +518,12 @@ private:
     std::vector<uint32_t> m_turnedContacts;
     std::vector<uint8_t> m_movedInto;
     std::vector<uint32_t> m_secondPushed; // separateMovedPairs(): the bodies its second pass pushed
-    std::vector<uint32_t> m_struck;       // separateMovedPairs(): the bodies struck faster than their margins allowed
+    // separateMovedPairs(): the contacts its second pass tests (positions in m_touchingContacts), movedInto() of
+    // each, and the collisions of the tests of either pass (testMovedInto()).
+    std::vector<uint32_t> m_secondTests;
+    std::vector<uint8_t> m_secondMovedInto;
+    std::vector<Manifold> m_separateCollisions;
+    std::vector<uint32_t> m_struck; // separateMovedPairs(): the bodies struck faster than their margins allowed
     // groundPushedBodies(): per body, whether this round pushed it and whether it is grounded; the slots of the
     // pairs to test.
     std::vector<uint8_t> m_pushedNow, m_grounded;

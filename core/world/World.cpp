@@ -395,84 +395,101 @@ void World::pushOutOfContacts(Real slop) {
     // four did not hold, 7.4 mm; now 2.0), moves the body out to `slop`, positions only (post-stabilisation; Cline and
     // Pai 2003), two passes. Contacts between two moving bodies are left to the sweeps: pushed apart, one went into
     // whatever held it on its other side.
-    std::vector<uint32_t>& pushed = m_pushedContacts;
-    pushed.clear();
-    for (int pass = 0; pass < 2; ++pass) {
-        const size_t count = pass == 0 ? m_touchingContacts.size() : pushed.size();
-        for (size_t s = 0; s < count; ++s) {
-            // The first pass reads the bodies from the compact list beside the contacts (m_touchingBodies), and the
-            // contact itself only where it moves a body.
-            const auto [a, b] = pass == 0 ? m_touchingBodies[s]
-                                          : std::pair{m_contactPairs[pushed[s]].bodyA, m_contactPairs[pushed[s]].bodyB};
-            const bool movesA = m_state.isMoving(a);
-            if (movesA == m_state.isMoving(b))
-                continue;
-            const uint32_t body = movesA ? a : b;
-            // A body that ends the step too slow to have moved slop within it is left alone (the sweeps keep a slow
-            // body's points where they hold them); this takes most resting contacts out before any transform.
-            if (pass == 0) {
-                const Real travel = (glm::length(m_state.linearVelocity[body]) +
-                                     glm::length(m_state.angularVelocity[body]) * m_radius[body]) /
-                                    m_fps;
-                if (!(travel > slop))
+    //
+    // Each body moves alone (the still side stays where the step started), so on a team each member takes the
+    // contacts of its share of the bodies, each body's in the same order as one thread: the same numbers.
+    const size_t bodyCount = m_state.size();
+    const int members = m_team && m_touchingContacts.size() >= kMinBodiesForTeam ? m_team->size() : 1;
+    m_pushedContacts.resize(std::max(m_pushedContacts.size(), static_cast<size_t>(members)));
+    const auto job = [&](int member) {
+        const auto [firstBody, lastBody] = ThreadTeam::share(0, bodyCount, member, members);
+        std::vector<uint32_t>& pushed = m_pushedContacts[static_cast<size_t>(member)].list;
+        pushed.clear();
+        for (int pass = 0; pass < 2; ++pass) {
+            const size_t count = pass == 0 ? m_touchingContacts.size() : pushed.size();
+            for (size_t s = 0; s < count; ++s) {
+                // The first pass reads the bodies from the compact list beside the contacts (m_touchingBodies), and the
+                // contact itself only where it moves a body.
+                const auto [a, b] = pass == 0
+                                        ? m_touchingBodies[s]
+                                        : std::pair{m_contactPairs[pushed[s]].bodyA, m_contactPairs[pushed[s]].bodyB};
+                const bool movesA = m_state.isMoving(a);
+                if (movesA == m_state.isMoving(b))
                     continue;
-            }
-            const uint32_t slot = pass == 0 ? m_touchingContacts[s] : pushed[s];
-            const Manifold& m = m_contactPool[slot].manifold;
-            if (m.pointCount == 0)
-                continue;
-            bool moved = false, movedAny = false;
-            // The still side's transform is that of the step's start.
-            const Transform& still = m_transforms[movesA ? b : a];
-            // Moves the body out along `out` by what the point p is deeper than slop in the still shape, measured
-            // from outside along the normal (a point that slid past the edge of the face it rested on is below its
-            // plane but not in it); `estimate` is its separation against that plane.
-            Transform now;
-            Vec3 out;
-            const auto pushOut = [&](const Vec3& p, Real estimate) {
-                const Real reach = 0.01 - estimate;
-                const std::optional<Real> t = distanceAlong(m_shapes[movesA ? b : a], still, p + reach * out, -out);
-                if (!t || !(*t - reach < -slop))
-                    return;
-                const Real sep = *t - reach;
-                const Vec3 r = p - m_state.position[body];
-                const Mat3 inverseInertia = m_state.worldInverseInertia(body);
-                const Vec3 c = glm::cross(r, out);
-                const Real w = m_state.invMass[body] + glm::dot(c, inverseInertia * c);
-                if (!(w > 0.0))
-                    return;
-                const Real push = -(sep + slop) / w; // along `out`
-                nudge(body, push, out, m_state.invMass[body], inverseInertia, c);
-                moved = movedAny = true;
-            };
-            // The manifold's points, then the body's corner deepest along the normal, which a fast turn may have
-            // brought down without a point of its own. The body's pose, and the direction out of the still shape
-            // (the normal turns with A, collidePair()), taken again after each push.
-            const auto pose = [&] {
-                now = transform(body);
-                out = movesA ? -(now.rotation * (glm::transpose(m_transforms[a].rotation) * m.normal)) : m.normal;
-                moved = false;
-            };
-            pose();
-            const Vec3 stillPoint = movesA ? still.apply(m.points[0].localB) : still.apply(m.points[0].localA);
-            for (int k = 0; k <= m.pointCount; ++k) {
-                if (moved)
-                    pose();
-                const Vec3 p = k < m.pointCount
-                                   ? (movesA ? now.apply(m.points[k].localA) : now.apply(m.points[k].localB))
-                                   : now.apply(m_shapes[body].support(now.rotateInverse(-out)));
-                const Vec3 onStill = k < m.pointCount
-                                         ? (movesA ? still.apply(m.points[k].localB) : still.apply(m.points[k].localA))
+                const uint32_t body = movesA ? a : b;
+                if (body < firstBody || body >= lastBody)
+                    continue;
+                // A body that ends the step too slow to have moved slop within it is left alone (the sweeps keep a slow
+                // body's points where they hold them); this takes most resting contacts out before any transform.
+                if (pass == 0) {
+                    const Real travel = (glm::length(m_state.linearVelocity[body]) +
+                                         glm::length(m_state.angularVelocity[body]) * m_radius[body]) /
+                                        m_fps;
+                    if (!(travel > slop))
+                        continue;
+                }
+                const uint32_t slot = pass == 0 ? m_touchingContacts[s] : pushed[s];
+                const Manifold& m = m_contactPool[slot].manifold;
+                if (m.pointCount == 0)
+                    continue;
+                bool moved = false, movedAny = false;
+                // The still side's transform is that of the step's start.
+                const Transform& still = m_transforms[movesA ? b : a];
+                // Moves the body out along `out` by what the point p is deeper than slop in the still shape, measured
+                // from outside along the normal (a point that slid past the edge of the face it rested on is below its
+                // plane but not in it); `estimate` is its separation against that plane.
+                Transform now;
+                Vec3 out;
+                const auto pushOut = [&](const Vec3& p, Real estimate) {
+                    const Real reach = 0.01 - estimate;
+                    const std::optional<Real> t = distanceAlong(m_shapes[movesA ? b : a], still, p + reach * out, -out);
+                    if (!t || !(*t - reach < -slop))
+                        return;
+                    const Real sep = *t - reach;
+                    const Vec3 r = p - m_state.position[body];
+                    const Mat3 inverseInertia = m_state.worldInverseInertia(body);
+                    const Vec3 c = glm::cross(r, out);
+                    const Real w = m_state.invMass[body] + glm::dot(c, inverseInertia * c);
+                    if (!(w > 0.0))
+                        return;
+                    const Real push = -(sep + slop) / w; // along `out`
+                    nudge(body, push, out, m_state.invMass[body], inverseInertia, c);
+                    moved = movedAny = true;
+                };
+                // The manifold's points, then the body's corner deepest along the normal, which a fast turn may have
+                // brought down without a point of its own. The body's pose, and the direction out of the still shape
+                // (the normal turns with A, collidePair()), taken again after each push.
+                const auto pose = [&] {
+                    now = transform(body);
+                    out = movesA ? -(now.rotation * (glm::transpose(m_transforms[a].rotation) * m.normal)) : m.normal;
+                    moved = false;
+                };
+                pose();
+                const Vec3 stillPoint = movesA ? still.apply(m.points[0].localB) : still.apply(m.points[0].localA);
+                for (int k = 0; k <= m.pointCount; ++k) {
+                    if (moved)
+                        pose();
+                    const Vec3 p = k < m.pointCount
+                                       ? (movesA ? now.apply(m.points[k].localA) : now.apply(m.points[k].localB))
+                                       : now.apply(m_shapes[body].support(now.rotateInverse(-out)));
+                    const Vec3 onStill =
+                        k < m.pointCount ? (movesA ? still.apply(m.points[k].localB) : still.apply(m.points[k].localA))
                                          : stillPoint;
-                const Real estimate = glm::dot(out, p - onStill);
-                if (estimate < -slop)
-                    pushOut(p, estimate);
+                    const Real estimate = glm::dot(out, p - onStill);
+                    if (estimate < -slop)
+                        pushOut(p, estimate);
+                }
+                if (pass == 0 && movedAny)
+                    pushed.push_back(slot);
             }
-            if (pass == 0 && movedAny)
-                pushed.push_back(slot);
         }
-    }
-    m_profile.count(Counter::PushedContacts, pushed.size());
+    };
+    if (members > 1)
+        m_team->run(job);
+    else
+        job(0);
+    for (int m = 0; m < members; ++m)
+        m_profile.count(Counter::PushedContacts, m_pushedContacts[static_cast<size_t>(m)].list.size());
 }
 
 void World::nudge(uint32_t body, Real push, const Vec3& direction, Real inverseMass, const Mat3& inverseInertia,

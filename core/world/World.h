@@ -510,7 +510,12 @@ private:
     // deepest contact in its first 2 s, 52.4 against 52.7 mm); 0 for none.
     std::vector<uint8_t> m_turnsThroughFeatures;
     static constexpr uint8_t kTurnsAnyCorner = 1, kTurnsBoxCorner = 2;
-    std::vector<uint32_t> m_pushedContacts; // pushOutOfContacts(): the contacts its first pass moved a body out of
+    // pushOutOfContacts(): per member of the team, the contacts its first pass moved a body out of, each list on
+    // lines of its own.
+    struct alignas(64) PushedList {
+        std::vector<uint32_t> list;
+    };
+    std::vector<PushedList> m_pushedContacts;
     // separateMovedPairs(): per body, how far its turn moves a point of it in a step, and whether it was pushed; the
     // touching contacts to test (positions in m_touchingContacts) and movedInto() of each.
     std::vector<Real> m_turnStep;

@@ -213,6 +213,20 @@ Scene randomBoxes(int count, unsigned seed) {
     return s;
 }
 
+Scene boxGrid(unsigned seed, Real spacing, Real height) {
+    Scene s;
+    s.bodies.push_back(floorBox());
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<Real> side(0.3, 0.8), unit(-1.0, 1.0), angle(0.0, 2.0 * kPi);
+    for (int i = 0; i < 1000; ++i) {
+        const Vec3 at((i % 10 - 4.5) * spacing, height + (i / 100) * spacing, ((i / 10) % 10 - 4.5) * spacing);
+        const Vec3 axis = glm::normalize(Vec3(unit(rng), unit(rng), unit(rng)) + Vec3(0.0, 0.0, 1e-6));
+        const Vec3 half = 0.5 * Vec3(side(rng), side(rng), side(rng));
+        s.bodies.push_back(box("Box" + std::to_string(i), half, at, glm::angleAxis(angle(rng), axis)));
+    }
+    return s;
+}
+
 Scene coincidentBoxes() {
     Scene s;
     s.world.gravity = Vec3(0.0);

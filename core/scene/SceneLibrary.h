@@ -27,10 +27,13 @@ Scene slope(Real degrees, Real friction);               // a block resting on an
 Scene drop(Real height, Real restitution); // a sphere of radius 0.1 m whose bottom starts `height` above the floor
 Scene tumbling(int axis, Real spin = 4.0); // a T-handle hull spun about principal axis 0, 1 or 2; no gravity
 Scene randomBoxes(int count, unsigned seed = 1); // boxes of random size and orientation dropped on a floor
-Scene coincidentBoxes();                         // two identical boxes in the same place
-Scene busy(unsigned seed = 7);                   // mixed spheres and boxes, restitution and friction, inside walls
-Scene bullet(Real offset, Real speed = 300.0);   // a 0.1 m cube shot at a 5 cm anchor wall; offset shifts the start
-Scene spinningPlank(Real spin = 50.0);           // a thin plank spinning at `spin` rad/s, moving towards a thin wall
+// 1,000 boxes of random sides 0.3-0.8 m and random turns in a 10 x 10 x 10 grid `spacing` apart, the lowest layer
+// `height` up, over a floor: the layout of tests/data/acceptance/boxes1000.obj (1.6 m apart from 10 m).
+Scene boxGrid(unsigned seed, Real spacing, Real height);
+Scene coincidentBoxes();                       // two identical boxes in the same place
+Scene busy(unsigned seed = 7);                 // mixed spheres and boxes, restitution and friction, inside walls
+Scene bullet(Real offset, Real speed = 300.0); // a 0.1 m cube shot at a 5 cm anchor wall; offset shifts the start
+Scene spinningPlank(Real spin = 50.0);         // a thin plank spinning at `spin` rad/s, moving towards a thin wall
 // A 0.1 m steel cube shot at 1 m height at a free-standing 5 cm x 2 m x 2 m wall on the floor (body 1; the shot is
 // body 2); offset shifts the start back from 2 m before the wall.
 Scene shotAtStandingWall(Real offset, Real speed = 100.0);

@@ -6,30 +6,8 @@
 
 #include <QTest>
 
-#include <random>
-
 using namespace rl;
 using namespace rl::test;
-
-namespace {
-
-// The layout of tests/data/acceptance/boxes1000.obj: a 10 x 10 x 10 grid of boxes `spacing` apart, 0.3-0.8 m a side,
-// each turned at random, its lowest layer `height` up, over the library's floor box (top at y = 0).
-Scene boxGrid(unsigned seed, Real spacing, Real height) {
-    Scene s;
-    s.bodies.push_back(scenes::floorBox());
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<Real> side(0.3, 0.8), unit(-1.0, 1.0), angle(0.0, 2.0 * kPi);
-    for (int i = 0; i < 1000; ++i) {
-        const Vec3 at((i % 10 - 4.5) * spacing, height + (i / 100) * spacing, ((i / 10) % 10 - 4.5) * spacing);
-        const Vec3 axis = glm::normalize(Vec3(unit(rng), unit(rng), unit(rng)) + Vec3(0.0, 0.0, 1e-6));
-        const Vec3 half = 0.5 * Vec3(side(rng), side(rng), side(rng));
-        s.bodies.push_back(scenes::box("Box" + std::to_string(i), half, at, glm::angleAxis(angle(rng), axis)));
-    }
-    return s;
-}
-
-} // namespace
 
 class TestPiles : public QObject {
     Q_OBJECT
@@ -106,7 +84,7 @@ private slots:
         QFETCH(unsigned, seed);
         QFETCH(double, spacing);
         QFETCH(double, height);
-        World w = makeWorld(boxGrid(seed, spacing, height));
+        World w = makeWorld(scenes::boxGrid(seed, spacing, height));
         Real lowest = 1e9; // the lowest point of any box (exact: a box's bounds touch its corners)
         int frame = 0;
         const RunStats stats = run(w, 600, [&](int f) {

@@ -28,7 +28,8 @@ Scene drop(Real height, Real restitution); // a sphere of radius 0.1 m whose bot
 Scene tumbling(int axis, Real spin = 4.0); // a T-handle hull spun about principal axis 0, 1 or 2; no gravity
 Scene randomBoxes(int count, unsigned seed = 1); // boxes of random size and orientation dropped on a floor
 // 1,000 boxes of random sides 0.3-0.8 m and random turns in a 10 x 10 x 10 grid `spacing` apart, the lowest layer
-// `height` up, over a floor: the layout of tests/data/acceptance/boxes1000.obj (1.6 m apart from 10 m).
+// `height` up, over a floor: the layout of tests/data/acceptance/boxes1000.obj (1.6 m apart from 1 m, there with the
+// boxes also moved by up to 5 cm across).
 Scene boxGrid(unsigned seed, Real spacing, Real height);
 Scene coincidentBoxes();                       // two identical boxes in the same place
 Scene busy(unsigned seed = 7);                 // mixed spheres and boxes, restitution and friction, inside walls

@@ -643,8 +643,9 @@ void World::testMovedInto(std::span<const uint32_t> contacts, Real slop, std::ve
         return;
     }
     // Claimed in chunks as the members go: a test that collides costs many times one that a direction turns away,
-    // and in even halves one member waited for the other (on two threads the tests of boxes1000.obj's first 120
-    // frames took 16.4 ms against 26.7 on one).
+    // and in even halves one member waited for the other. (The tests of boxes1000.obj's first 120 frames took 16.2-16.6
+    // ms on two threads in even halves, 15.0-15.6 in chunks, and 26.0-28.7 on one; timers in a scratch build, two runs
+    // each, 2026-12-06.)
     const size_t chunks = (count + kSeparateChunk - 1) / kSeparateChunk;
     std::atomic<size_t> claimed{0};
     m_team->run([&](int member) {

@@ -3,8 +3,8 @@
 // `frames` frames on one thread from the library's layouts:
 //   random  scenes::randomBoxes(1000, seed)           (tst_piles' thousandBoxesSettle)
 //   grid12  scenes::boxGrid(seed, 1.2, 1.0)           1.2 m apart from 1 m
-//   grid16  scenes::boxGrid(seed, 1.6, 1.0)           1.6 m apart from 1 m
-//   grid16h scenes::boxGrid(seed, 1.6, 10.0)          1.6 m apart from 10 m, as tests/data/acceptance/boxes1000.obj
+//   grid16  scenes::boxGrid(seed, 1.6, 1.0)           1.6 m apart from 1 m, as tests/data/acceptance/boxes1000.obj
+//   grid16h scenes::boxGrid(seed, 1.6, 10.0)          1.6 m apart from 10 m
 // and prints a line per pile: the lowest point of any box (below the floor's top, y = 0, when negative) and its
 // frame, the fastest box's speed over the last second (60 frames at 60 Hz), the deepest contact from frame
 // `--depth-from` on (5 by default: randomBoxes() creates some boxes inside each other), the frames from then on with a
@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -50,7 +51,8 @@ PileFigures runPile(const Layout& layout, unsigned seed, int frames, int depthFr
         layout.spacing > 0.0 ? scenes::boxGrid(seed, layout.spacing, layout.height) : scenes::randomBoxes(1000, seed);
     Result<World> made = World::create(scene);
     PileFigures out;
-    if (!made) {
+    if (!made) { // counted as not finite
+        std::fprintf(stderr, "bench_piles: %s seed %u: %s\n", layout.name, seed, made.error().toString().c_str());
         out.finite = false;
         return out;
     }

@@ -257,7 +257,7 @@ public:
     // Whether the last prepare() found blows to absorb, and (for tests) their constraints, as indices into the
     // manifolds given to prepare(), in the order absorbBlows() first sweeps them.
     bool hasBlows() const { return !m_blows.empty(); }
-    std::vector<uint32_t> blowConstraints() const { return m_blowIndex; }
+    const std::vector<uint32_t>& blowConstraints() const { return m_blowIndex; }
     // How far down from a struck body absorbBlows() follows the bodies that bear it up.
     static constexpr int kBlowDepth = 16;
     // A manifold whose nearest point is farther apart than this (m) bears nothing up for absorbBlows() unless struck.

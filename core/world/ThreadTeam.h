@@ -3,6 +3,7 @@
 // narrowphase and for the level-by-level contact solve (ContactSolver), whose results do not depend on the team size.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -46,6 +47,21 @@ public:
     // never take the same chunk, and between them they take all. Any other team takes chunk `claim`.
     static size_t chunkOfClaim(size_t claim, size_t k, int member, int members, size_t chunks) {
         return members != 2 ? claim : member == 0 ? k : chunks - 1 - k;
+    }
+    // Inside a job (or alone, members 1): claims chunks of `chunk` items of [0, count) from `claimed`, a counter the
+    // members share that starts at 0, until none is left, and calls range(begin, end) for each, the chunks placed by
+    // chunkOfClaim().
+    template <class Range>
+    static void forEachClaimedChunk(std::atomic<size_t>& claimed, size_t count, size_t chunk, int member, int members,
+                                    Range&& range) {
+        const size_t chunks = (count + chunk - 1) / chunk;
+        for (size_t k = 0;; ++k) {
+            const size_t claim = claimed.fetch_add(1, std::memory_order_relaxed);
+            if (claim >= chunks)
+                break;
+            const size_t at = chunkOfClaim(claim, k, member, members, chunks);
+            range(at * chunk, std::min(count, (at + 1) * chunk));
+        }
     }
 
 private:

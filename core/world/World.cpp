@@ -646,16 +646,9 @@ void World::testMovedInto(std::span<const uint32_t> contacts, Real slop, std::ve
     // and in even halves one member waited for the other. (The tests of boxes1000.obj's first 120 frames took 16.2-16.6
     // ms on two threads in even halves, 15.0-15.6 in chunks, and 26.0-28.7 on one; timers in a scratch build, two runs
     // each, 2026-12-06.)
-    const size_t chunks = (count + kSeparateChunk - 1) / kSeparateChunk;
     std::atomic<size_t> claimed{0};
     m_team->run([&](int member) {
-        for (size_t k = 0;; ++k) {
-            const size_t claim = claimed.fetch_add(1, std::memory_order_relaxed);
-            if (claim >= chunks)
-                break;
-            const size_t at = ThreadTeam::chunkOfClaim(claim, k, member, m_team->size(), chunks);
-            test(at * kSeparateChunk, std::min(count, (at + 1) * kSeparateChunk));
-        }
+        ThreadTeam::forEachClaimedChunk(claimed, count, kSeparateChunk, member, m_team->size(), test);
     });
 }
 
@@ -2803,18 +2796,13 @@ void World::continuousCollision() {
     const int members = m_team && n >= kMinBodiesForTeam ? m_team->size() : 1;
     std::vector<MemberWork> work(static_cast<size_t>(members));
     constexpr size_t kChunk = 32;
-    const size_t chunks = (n + kChunk - 1) / kChunk;
     std::atomic<size_t> claimed{0};
     const auto job = [&](int member) {
-        for (size_t k = 0;; ++k) {
-            const size_t claim = claimed.fetch_add(1, std::memory_order_relaxed);
-            if (claim >= chunks)
-                break;
-            const size_t at = ThreadTeam::chunkOfClaim(claim, k, member, members, chunks);
-            for (size_t i = at * kChunk; i < std::min(n, (at + 1) * kChunk); ++i)
+        ThreadTeam::forEachClaimedChunk(claimed, n, kChunk, member, members, [&](size_t begin, size_t end) {
+            for (size_t i = begin; i < end; ++i)
                 if (m_state.isMoving(static_cast<uint32_t>(i)))
                     sweepBody(static_cast<uint32_t>(i), work[static_cast<size_t>(member)]);
-        }
+        });
     };
     if (members > 1)
         m_team->run(job);

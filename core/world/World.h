@@ -425,6 +425,8 @@ private:
     // An inelastic impulse at the contact's fastest closing point, repeated while the lower body rises into the
     // upper one (heightsAboveSupport()).
     void meetRisingLowerBody(uint32_t slot);
+    // A touching manifold's least separation, and the side its normal bears up against gravity (+1 A, -1 B, 0 none).
+    std::pair<Real, int8_t> contactSupport(const Manifold& manifold) const;
     void continuousCollision();
     void updateSleep();
     Real pairMargin(uint32_t a, uint32_t b) const;
@@ -595,6 +597,12 @@ private:
     // (anchor or sleeper), 1 when it touches one; 0 elsewhere or with no path (see World::heightsAboveSupport()).
     std::vector<uint32_t> m_height;
     std::vector<Real> m_contactGap; // per touching contact: its least separation (heightsAboveSupport())
+    // Per touching contact: +1 when its normal bears body A up against gravity, -1 when it bears B up, 0 when neither.
+    std::vector<int8_t> m_contactBearsUp;
+    // Whether the narrowphase's listing of the touching contacts fills m_contactGap and m_contactBearsUp: while the
+    // last step had a mixed island (m_anyHeight), when the next one most likely has one too. (Otherwise
+    // heightsAboveSupport() fills them itself; the numbers are the same.)
+    bool m_listGaps = false, m_gapsListed = false;
     std::vector<Real> m_nearestGap; // per body: the least separation of its touching contacts
     bool m_anyHeight = false;
     // This step: no two moving bodies far enough apart in mass for any island to take finer substeps (solve()); then
@@ -618,6 +626,10 @@ private:
         std::vector<NarrowTest> tests; // the pairs of its current chunk that the filter let through
         std::vector<uint32_t> touching;
         std::vector<std::pair<uint32_t, uint32_t>> touchingBodies;
+        // Beside `touching` while m_listGaps: each contact's least separation and the side its normal bears up
+        // (contactSupport()).
+        std::vector<Real> gaps;
+        std::vector<int8_t> bearsUp;
         std::vector<size_t> mayWake;
         // The contacts of the islands this member solved in the last step (listed in solveGroup()), which it collides
         // first in this step's narrowphase, before it takes chunks of the rest.

@@ -252,14 +252,18 @@ public:
                  const ParallelFor& parallelFor = {}, std::span<const Hold> held = {}, const PackParts& packParts = {});
 
     // Takes the step's blows out of the bodies' velocities (ContactSolverSettings::blowPasses), before the substeps,
-    // on the bodies as prepare() had them; keeps no impulse. One thread, whatever the team: the same numbers.
-    void absorbBlows(std::span<SolverBody> bodies);
+    // on the bodies as prepare() had them; keeps no impulse. A team (parallelFor) sweeps groups of them that share no
+    // moving body apart: the same numbers.
+    void absorbBlows(std::span<SolverBody> bodies, const ParallelFor& parallelFor = {});
+    // The bodies whose velocities the last absorbBlows() may have changed (solver indices, ascending).
+    const std::vector<uint32_t>& blowBodies() const { return m_blowBodies; }
     // Whether the last prepare() found blows to absorb, and (for tests) their constraints, as indices into the
     // manifolds given to prepare(), in the order absorbBlows() first sweeps them.
     bool hasBlows() const { return !m_blows.empty(); }
     const std::vector<uint32_t>& blowConstraints() const { return m_blowIndex; }
     // How far down from a struck body absorbBlows() follows the bodies that bear it up.
     static constexpr int kBlowDepth = 16;
+    static constexpr size_t kMinSharedBlows = 32; // blows whose set-up a team shares out (findBlows())
     // A manifold whose nearest point is farther apart than this (m) bears nothing up for absorbBlows() unless struck.
     static constexpr Real kBlowSupportGap = 0.01;
     // The shock passes hold a lower body still only under a manifold whose normal rises at least this much (its
@@ -532,7 +536,8 @@ private:
     size_t batchCount() const { return m_width == 8 ? m_store8.batches.size() : m_store4.batches.size(); }
     void buildBatches(const SetUpInputs& inputs, const ParallelFor& parallelFor);
     // After buildBatches(): absorbBlows()' records (m_blows, m_shocks) from the struck constraints (m_struck).
-    void findBlows(const SetUpInputs& inputs);
+    void findBlows(const SetUpInputs& inputs, const ParallelFor& parallelFor);
+    void shareBlows(size_t bodyCount); // absorbBlows()' groups of blows to two members of a team
     // Copies the batches' impulses and impact records back to m_constraints, if a batched sweep ran since and
     // records are kept (m_kept, or m_bounceOnly for those of the constraints that may bounce).
     void syncFromBatches() const;
@@ -577,14 +582,20 @@ private:
     std::vector<ContactConstraint> m_blows, m_shocks;
     std::vector<uint32_t> m_blowIndex;
     // findBlows()' scratch: per body, its constraints (m_blowFirst, m_blowList), its level in the walk down and its
-    // height; the walk's queue (absorbBlows(): the bodies it moves); per constraint, whether it is taken; the order
-    // from the ground up.
+    // height; the walk's queue; per constraint, whether it is taken; the order from the ground up.
     std::vector<uint32_t> m_blowFirst, m_blowList, m_blowLevel, m_blowHeight, m_blowQueue;
     std::vector<uint8_t> m_blowTaken;
     std::vector<std::pair<uint32_t, uint32_t>> m_blowOrder;
     std::vector<std::pair<Vec3, Vec3>> m_blowSaved; // absorbBlows()' velocities before a kind of pass
-    std::vector<BatchLayout> m_batchLayout;         // per batch (buildBatches())
-    std::vector<uint32_t> m_laneOf;                 // per constraint: its batch times the lane width, plus its lane
+    std::vector<uint32_t> m_blowBodies;             // absorbBlows()' moving bodies, ascending
+    std::vector<Mat3> m_blowInertia;                // beside m_blowBodies: each one's inertia (0 where not invertible)
+    // shareBlows(): per body, its root among the groups and (at a root) the group's constraints, then its member;
+    // the groups by size; each member's records of m_blows and of m_shocks, in their order.
+    std::vector<uint32_t> m_blowRoot, m_blowWeight;
+    std::vector<std::pair<uint32_t, uint32_t>> m_blowGroups;
+    std::array<std::vector<uint32_t>, 2> m_blowShare, m_shockShare;
+    std::vector<BatchLayout> m_batchLayout; // per batch (buildBatches())
+    std::vector<uint32_t> m_laneOf;         // per constraint: its batch times the lane width, plus its lane
     std::vector<uint32_t> m_solveOrder; // constraint indices, level by level (grouped within a level: buildBatches())
     std::vector<uint8_t> m_segment;     // per constraint: its part, or kBoundarySegment
     size_t m_segmentLevelStart[kParts + 2] = {};

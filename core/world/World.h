@@ -317,11 +317,12 @@ private:
         std::vector<uint32_t> activeContacts, indexA, indexB; // pool slots of the group's contacts; solver indices
         std::vector<Manifold*> manifolds;                     // the group's contacts' manifolds, in m_contactPool
         std::vector<Real> friction, restitution;
-        std::vector<ContactSolver::Hold> held;     // per contact: its hold for shock propagation (contactHold())
-        std::vector<ClampCounters> clamps;         // per member of the team
-        BodyState local;                           // the group's bodies through the substeps (solveSubsteps())
-        std::vector<uint32_t> localIds;            // 0 .. bodies.size() - 1
-        std::vector<size_t> ownedStart;            // member m integrates local bodies ownedStart[m] .. [m + 1] - 1
+        std::vector<ContactSolver::Hold> held; // per contact: its hold for shock propagation (contactHold())
+        std::vector<ClampCounters> clamps;     // per member of the team
+        BodyState local;                       // the group's bodies through the substeps (solveSubsteps())
+        std::vector<uint32_t> localIds;        // 0 .. bodies.size() - 1
+        std::vector<size_t> ownedStart;        // member m integrates local bodies ownedStart[m] .. [m + 1] - 1
+        std::vector<uint32_t> edgeBodies; // solved by parts: part 1's bodies (solver indices) of the cut's constraints
         std::vector<uint32_t> renumber, reordered; // numberByParts()
         std::vector<Vec3> startPosition;           // local bodies at the step start
         std::vector<Quat> startOrientation;
@@ -604,6 +605,7 @@ private:
     // heightsAboveSupport() fills them itself; the numbers are the same.)
     bool m_listGaps = false, m_gapsListed = false;
     std::vector<Real> m_nearestGap; // per body: the least separation of its touching contacts
+    std::vector<uint8_t> m_mayRise; // per body with a height: whether its surface may move faster than holdRiseSpeed
     bool m_anyHeight = false;
     // This step: no two moving bodies far enough apart in mass for any island to take finer substeps (solve()); then
     // m_refinement is not filled and every moving body is in the one group.

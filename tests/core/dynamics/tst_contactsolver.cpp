@@ -173,6 +173,46 @@ Problem struckStack(int stack, Real speed, Real e) {
     return p;
 }
 
+// Stacks of 1 .. count cubes side by side on one ground (3 m apart), each struck from above at 4 + stack m/s, with
+// their manifolds taken level by level across the stacks: the stacks' blows alternate in manifold order.
+Problem struckStacks(int count) {
+    Problem all;
+    all.bodies.assign(1, SolverBody{});
+    all.centers.assign(1, Vec3(0.0));
+    std::vector<std::pair<int, size_t>> order; // (level in its stack, position in `all`) of each manifold
+    for (int stack = 1; stack <= count; ++stack) {
+        const Problem p = struckStack(stack, 4.0 + stack, 0.0);
+        const uint32_t offset = static_cast<uint32_t>(all.bodies.size() - 1);
+        const Vec3 shift(3.0 * stack, 0.0, 0.0);
+        for (size_t i = 1; i < p.bodies.size(); ++i) {
+            all.bodies.push_back(p.bodies[i]);
+            all.centers.push_back(p.centers[i] + shift);
+        }
+        for (size_t k = 0; k < p.manifolds.size(); ++k) {
+            Manifold m = p.manifolds[k];
+            for (uint32_t* body : {&m.bodyA, &m.bodyB})
+                if (*body != 0)
+                    *body += offset;
+            for (int n = 0; n < m.pointCount; ++n)
+                m.points[n].position += shift;
+            order.emplace_back(static_cast<int>(k), all.manifolds.size());
+            all.manifolds.push_back(m);
+        }
+    }
+    std::stable_sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    Problem p;
+    p.bodies = all.bodies;
+    p.centers = all.centers;
+    for (const auto& [level, k] : order) {
+        p.manifolds.push_back(all.manifolds[k]);
+        p.indexA.push_back(all.manifolds[k].bodyA);
+        p.indexB.push_back(all.manifolds[k].bodyB);
+        p.friction.push_back(0.5);
+        p.restitution.push_back(0.0);
+    }
+    return p;
+}
+
 // p's bodies after a warm start and one solve sweep, and a relax sweep if `relax`.
 std::vector<SolverBody> oneSubstep(const Problem& p, bool relax) {
     ContactSolver solver;
@@ -1286,6 +1326,65 @@ private slots:
         qInfo("struck at %.0f m/s: fastest body after %.2e m/s, %llu rows", speed, fastest,
               static_cast<unsigned long long>(solver.counters().blowRows));
         QVERIFY(fastest < bound);
+    }
+
+    // The blows fall apart into groups that share no moving body, which a team sweeps apart (two members, each its
+    // groups in their order): the velocities are those of one sweep of all of them, to the bit, whichever group a
+    // member takes first and however many blows (few are swept by one thread: kMinSharedBlows).
+    void absorbBlowsInGroupsGivesTheSameVelocities_data() {
+        QTest::addColumn<int>("stacks");
+        QTest::newRow("2 stacks, 5 blows") << 2;
+        QTest::newRow("6 stacks, 27 blows") << 6;
+        QTest::newRow("9 stacks, 54 blows") << 9;
+    }
+    void absorbBlowsInGroupsGivesTheSameVelocities() {
+        QFETCH(int, stacks);
+        const Problem p = struckStacks(stacks);
+        ContactSolverSettings settings;
+        settings.contactHertz = 15.0;
+        settings.gravity = Vec3(0.0, -9.81, 0.0);
+        settings.step = 1.0 / 60.0;
+        settings.blowPasses = 4;
+        settings.blowShockPasses = 2;
+        std::vector<Manifold*> manifolds;
+        for (const Manifold& m : p.manifolds)
+            manifolds.push_back(const_cast<Manifold*>(&m));
+        const auto run = [&](const ContactSolver::ParallelFor& parallelFor, std::vector<SolverBody>& bodies) {
+            ContactSolver solver;
+            solver.prepare(manifolds, p.indexA, p.indexB, p.friction, p.restitution, p.bodies, p.centers, 1.0 / 360.0,
+                           settings, {}, parallelFor);
+            bodies = p.bodies;
+            solver.absorbBlows(bodies, parallelFor);
+            return std::make_pair(solver.blowConstraints().size(), solver.counters().blowRows);
+        };
+        std::vector<SolverBody> alone, backwards, team;
+        const auto [blows, rows] = run({}, alone);
+        QCOMPARE(blows, static_cast<size_t>(stacks * (stacks + 3) / 2)); // every manifold of every stack
+        // One thread taking the second member's share first, then a team of two.
+        const ContactSolver::ParallelFor reversed = [](size_t count, const std::function<void(size_t, size_t)>& body) {
+            for (int member = 1; member >= 0; --member) {
+                const auto [begin, end] = ThreadTeam::share(0, count, member, 2);
+                body(begin, end);
+            }
+        };
+        ThreadTeam threads(2);
+        const ContactSolver::ParallelFor together = [&](size_t count, const std::function<void(size_t, size_t)>& body) {
+            threads.run([&](int member) {
+                const auto [begin, end] = ThreadTeam::share(0, count, member, 2);
+                body(begin, end);
+            });
+        };
+        QCOMPARE(run(reversed, backwards), std::make_pair(blows, rows));
+        QCOMPARE(run(together, team), std::make_pair(blows, rows));
+        Real fastest = 0.0;
+        for (size_t i = 0; i < alone.size(); ++i) {
+            for (const std::vector<SolverBody>* other : {&backwards, &team}) {
+                QVERIFY(sameBits(alone[i].v, (*other)[i].v));
+                QVERIFY(sameBits(alone[i].w, (*other)[i].w));
+            }
+            fastest = std::max(fastest, glm::length(alone[i].v));
+        }
+        QVERIFY(fastest < 0.1); // the blows were absorbed: every stack stopped
     }
 };
 

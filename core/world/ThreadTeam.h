@@ -27,6 +27,14 @@ public:
     // Inside a job: returns once every member has called it; what each member wrote before is then visible to all.
     void barrier();
 
+    // Inside a job: returns once `counter` is at least `atLeast`. For a one-way wait on other members' progress:
+    // whoever advances the counter does so with release order and then notifies it (notify_all()).
+    static void awaitAtLeast(const std::atomic<uint32_t>& counter, uint32_t atLeast) {
+        for (uint32_t seen = counter.load(std::memory_order_acquire); seen < atLeast;
+             seen = counter.load(std::memory_order_acquire))
+            awaitChange(counter, seen);
+    }
+
     // Nanoseconds member 0 spent waiting for the others, at barriers and at the end of run(), since the last call;
     // zero for a team of one. The world reads it to see whether the team pays (TeamPacer).
     uint64_t takeLeaderWait() { return std::exchange(m_leaderWaitNs, 0); }

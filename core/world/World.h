@@ -323,6 +323,7 @@ private:
         std::vector<uint32_t> localIds;        // 0 .. bodies.size() - 1
         std::vector<size_t> ownedStart;        // member m integrates local bodies ownedStart[m] .. [m + 1] - 1
         std::vector<uint32_t> edgeBodies; // solved by parts: part 1's bodies (solver indices) of the cut's constraints
+        std::vector<uint32_t> innerIds, edgeIds;   // part 1's local ids off the cut and on it
         std::vector<uint32_t> renumber, reordered; // numberByParts()
         std::vector<Vec3> startPosition;           // local bodies at the step start
         std::vector<Quat> startOrientation;

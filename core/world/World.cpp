@@ -2386,7 +2386,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
     scratch.friction.resize(contactCount);
     scratch.restitution.resize(contactCount);
     scratch.held.resize(contactCount);
-    shareOut(parallelFor, contactCount, [&](size_t first, size_t last) {
+    const auto setUpContacts = [&](size_t first, size_t last) {
         for (size_t k = first; k < last; ++k) {
             const uint32_t slot = scratch.activeContacts[k];
             const ContactPair& contact = m_contactPairs[slot];
@@ -2411,7 +2411,18 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
                 manifold.heldImpulses = hold.side != 0;
             scratch.held[k] = hold;
         }
-    });
+    };
+    // Claimed in chunks by the team: the contacts with an anchor come first in pair order, and take no hold. (In even
+    // halves, member 1 took 0.041 ms a step of boxes1000's frames 45-120 and member 0 0.025, the whole 0.044; in
+    // chunks 0.033-0.039 each, the whole 0.039-0.041; scratch timers, 2026-12-06.)
+    if (parallelFor) {
+        std::atomic<size_t> claimed{0};
+        m_team->run([&](int member) {
+            ThreadTeam::forEachClaimedChunk(claimed, contactCount, kSetUpChunk, member, m_team->size(), setUpContacts);
+        });
+    } else {
+        setUpContacts(0, contactCount);
+    }
     cutIslands(scratch, parallelFor);
     numberByParts(scratch);
 

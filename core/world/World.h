@@ -641,6 +641,7 @@ private:
     };
     std::vector<NarrowList> m_narrowLists;
     static constexpr size_t kNarrowChunk = 128; // pairs per claim of the narrowphase's team
+    static constexpr size_t kSetUpChunk = 128;  // contacts per claim of the solve's set-up (solveSubsteps())
     static constexpr size_t kSolvedChunk = 32;  // contacts per claim of member 0's solved contacts (NarrowList::solved)
     // Pairs the last step's narrowphase tested (findAndCollidePairs()); the first step counts as busy.
     uint64_t m_lastPairsTested = std::numeric_limits<uint64_t>::max();

@@ -263,7 +263,8 @@ public:
     const std::vector<uint32_t>& blowConstraints() const { return m_blowIndex; }
     // How far down from a struck body absorbBlows() follows the bodies that bear it up.
     static constexpr int kBlowDepth = 16;
-    static constexpr size_t kMinSharedBlows = 32; // blows whose set-up a team shares out (findBlows())
+    // From this many blows on, a team shares their set-up out (findBlows()) and their groups (absorbBlows()).
+    static constexpr size_t kMinSharedBlows = 32;
     // A manifold whose nearest point is farther apart than this (m) bears nothing up for absorbBlows() unless struck.
     static constexpr Real kBlowSupportGap = 0.01;
     // The shock passes hold a lower body still only under a manifold whose normal rises at least this much (its

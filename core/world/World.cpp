@@ -2618,7 +2618,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
                 return;
             if (boundaryShared) {
                 levelByLevel(solver.segmentLevelBegin(kBoundary), solver.segmentLevelBegin(kBoundary + 1), range);
-            } else if (members != 2) { // (the others wait at a barrier)
+            } else if (members != 2) { // a team of three or more: every member waits at a barrier
                 if (member == 0) {
                     claimEdge();
                     range(begin, end);

@@ -716,9 +716,10 @@ void World::separateMovedPairs(Real slop) {
     // before this list of contacts; 19.1 ms without it; 2026-12-06).
     const size_t n = m_touchingContacts.size();
     m_turnedContacts.clear();
+    // (The bodies of the touching contacts from their compact list, not from the contacts in the pool.)
     for (size_t k = 0; k < n; ++k) {
-        const uint32_t slot = m_touchingContacts[k];
-        if (m_turnStep[m_contactPairs[slot].bodyA] + m_turnStep[m_contactPairs[slot].bodyB] > m_tuning.separateTurn)
+        const auto [a, b] = m_touchingBodies[k];
+        if (m_turnStep[a] + m_turnStep[b] > m_tuning.separateTurn)
             m_turnedContacts.push_back(static_cast<uint32_t>(k));
     }
     const size_t tests = m_turnedContacts.size();
@@ -754,8 +755,8 @@ void World::separateMovedPairs(Real slop) {
         std::vector<uint32_t>& candidates = m_secondTests; // positions in m_touchingContacts
         candidates.clear();
         for (size_t k = 0; k < n; ++k) {
-            const uint32_t slot = m_touchingContacts[k];
-            if (pushed[m_contactPairs[slot].bodyA] || pushed[m_contactPairs[slot].bodyB])
+            const auto [a, b] = m_touchingBodies[k];
+            if (pushed[a] || pushed[b])
                 candidates.push_back(static_cast<uint32_t>(k));
         }
         const size_t count = candidates.size();

@@ -627,29 +627,32 @@ int World::separatePair(uint32_t slot, Real slop, std::vector<uint8_t>* grounded
     return pushes;
 }
 
-void World::testMovedInto(std::span<const uint32_t> contacts, Real slop, std::vector<uint8_t>& deep,
-                          std::vector<Manifold>& collisions) {
-    const auto test = [&](size_t begin, size_t end) {
-        for (size_t t = begin; t < end; ++t) {
-            const uint32_t slot = m_touchingContacts[contacts[t]];
-            const bool in = movedInto(slot, slop, transform(m_contactPairs[slot].bodyA),
-                                      transform(m_contactPairs[slot].bodyB), false, &collisions[t]);
-            deep[t] = in ? 1 : 0;
-        }
-    };
-    const size_t count = contacts.size();
-    if (!m_team || count < kMinBodiesForTeam) {
-        test(0, count);
+void World::forEachChunkClaimed(size_t count, size_t chunk, bool onTeam,
+                                const std::function<void(size_t, size_t)>& range) {
+    if (!onTeam || !m_team) {
+        range(0, count);
         return;
     }
+    std::atomic<size_t> claimed{0};
+    m_team->run(
+        [&](int member) { ThreadTeam::forEachClaimedChunk(claimed, count, chunk, member, m_team->size(), range); });
+}
+
+void World::testMovedInto(std::span<const uint32_t> contacts, Real slop, std::vector<uint8_t>& deep,
+                          std::vector<Manifold>& collisions) {
     // Claimed in chunks as the members go: a test that collides costs many times one that a direction turns away,
     // and in even halves one member waited for the other. (The tests of boxes1000.obj's first 120 frames took 16.2-16.6
     // ms on two threads in even halves, 15.0-15.6 in chunks, and 26.0-28.7 on one; timers in a scratch build, two runs
     // each, 2026-12-06.)
-    std::atomic<size_t> claimed{0};
-    m_team->run([&](int member) {
-        ThreadTeam::forEachClaimedChunk(claimed, count, kSeparateChunk, member, m_team->size(), test);
-    });
+    forEachChunkClaimed(
+        contacts.size(), kSeparateChunk, contacts.size() >= kMinBodiesForTeam, [&](size_t begin, size_t end) {
+            for (size_t t = begin; t < end; ++t) {
+                const auto [a, b] = m_touchingBodies[contacts[t]];
+                const bool in =
+                    movedInto(m_touchingContacts[contacts[t]], slop, transform(a), transform(b), false, &collisions[t]);
+                deep[t] = in ? 1 : 0;
+            }
+        });
 }
 
 void World::separateMovedPairs(Real slop) {
@@ -740,7 +743,7 @@ void World::separateMovedPairs(Real slop) {
         if (!m_movedInto[t])
             continue;
         const uint32_t slot = m_touchingContacts[m_turnedContacts[t]];
-        const uint32_t a = m_contactPairs[slot].bodyA, b = m_contactPairs[slot].bodyB;
+        const auto [a, b] = m_touchingBodies[m_turnedContacts[t]];
         const Manifold* collision = pushed[a] || pushed[b] ? nullptr : &m_separateCollisions[t];
         if (const int p = separatePair(slot, slop, nullptr, collision); p > 0) {
             pushes += static_cast<uint64_t>(p);
@@ -773,7 +776,7 @@ void World::separateMovedPairs(Real slop) {
         Manifold collision;
         for (size_t t = 0; t < count; ++t) {
             const uint32_t slot = m_touchingContacts[candidates[t]];
-            const uint32_t a = m_contactPairs[slot].bodyA, b = m_contactPairs[slot].bodyB;
+            const auto [a, b] = m_touchingBodies[candidates[t]];
             const Manifold* found = &m_separateCollisions[t];
             if (!tested || moved[a] || moved[b]) {
                 if (!movedInto(slot, slop, transform(a), transform(b), false, &collision))
@@ -2416,14 +2419,7 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
     // Claimed in chunks by the team: the contacts with an anchor come first in pair order, and take no hold. (In even
     // halves, member 1 took 0.041 ms a step of boxes1000's frames 45-120 and member 0 0.025, the whole 0.044; in
     // chunks 0.033-0.039 each, the whole 0.039-0.041; scratch timers, 2026-12-06.)
-    if (parallelFor) {
-        std::atomic<size_t> claimed{0};
-        m_team->run([&](int member) {
-            ThreadTeam::forEachClaimedChunk(claimed, contactCount, kSetUpChunk, member, m_team->size(), setUpContacts);
-        });
-    } else {
-        setUpContacts(0, contactCount);
-    }
+    forEachChunkClaimed(contactCount, kSetUpChunk, static_cast<bool>(parallelFor), setUpContacts);
     cutIslands(scratch, parallelFor);
     numberByParts(scratch);
 

@@ -455,6 +455,9 @@ private:
     // and there are enough; each test alone, so the results are the same.
     void testMovedInto(std::span<const uint32_t> contacts, Real slop, std::vector<uint8_t>& deep,
                        std::vector<Manifold>& collisions);
+    // range(begin, end) over [0, count): by the team if onTeam (and there is one), the members claiming chunks of
+    // `chunk` as they go (ThreadTeam::forEachClaimedChunk()), else at once on this thread.
+    void forEachChunkClaimed(size_t count, size_t chunk, bool onTeam, const std::function<void(size_t, size_t)>& range);
     static constexpr size_t kSeparateChunk = 16; // tests per claim of testMovedInto()'s team
     // How deep (negative) a contact may be after the step: -slop, or for one that began the step deeper than
     // WorldTuning::separateDeepStart (or at all, fromStart, unless one of its bodies is still), its depth then less

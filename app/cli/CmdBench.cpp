@@ -3,6 +3,7 @@
 // When the build links Debian's Bullet, the same scene is stepped in Bullet right after and the ratio is printed.
 #include "BulletReference.h"
 #include "Cli.h"
+#include "dynamics/ContactSolver.h"
 #include "io/SceneImport.h"
 #include "scene/SceneLibrary.h"
 #include "world/CoreRoundTrip.h"
@@ -19,6 +20,7 @@
 #include <fstream>
 #include <optional>
 #include <string>
+#include <thread>
 #include <time.h>
 #include <unistd.h>
 #include <vector>
@@ -106,6 +108,19 @@ std::string loadAverage() {
     std::string a, b, c;
     in >> a >> b >> c;
     return a + " " + b + " " + c;
+}
+
+// The CPU's model name as the kernel reports it (the first "model name" of /proc/cpuinfo), or "unknown".
+std::string cpuModel() {
+    std::ifstream in("/proc/cpuinfo");
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("model name", 0) != 0)
+            continue;
+        const size_t colon = line.find(':');
+        if (colon != std::string::npos && colon + 2 <= line.size())
+            return line.substr(colon + 2);
+    }
+    return "unknown";
 }
 
 // Per-frame step times of one run, wall clock and the stepping thread's CPU time (ms).
@@ -407,6 +422,13 @@ int runBench(const QStringList& arguments) {
                        .arg(withBullet ? QString::fromStdString(bench::BulletReference::description())
                                        : QStringLiteral("no Bullet comparison"))
                        .arg(QString::fromStdString(loadAverage())));
+    // Ratios to Bullet depend on the machine: RigidLab's sweeps run twice the lanes with AVX-512 (README, "Whole
+    // steps"), Bullet's scalar step does not change.
+    if (!quiet)
+        printError(QString("bench: CPU %1, %2 logical CPUs; RigidLab's contact sweeps in %3")
+                       .arg(QString::fromStdString(cpuModel()))
+                       .arg(std::thread::hardware_concurrency())
+                       .arg(QString::fromStdString(ContactSolver::sweepsDescription())));
 
     WorldOptions options;
     options.threads = threads;

@@ -830,6 +830,16 @@ int ContactSolver::laneWidthHere() {
     return wide && s_widestLanes >= 8 ? 8 : 4;
 }
 
+std::string ContactSolver::sweepsDescription() {
+    const int lanes = laneWidthHere();
+    std::string isa = "portable";
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+    // As the sweeps' target_clones choose: the x86-64-v3 clone where the CPU has it, else the baseline one.
+    isa = lanes == 8 ? "AVX-512" : __builtin_cpu_supports("x86-64-v3") ? "AVX2" : "SSE2";
+#endif
+    return std::to_string(lanes) + " lanes of doubles (" + isa + ")";
+}
+
 int ContactSolver::s_widestLanes = 8;
 bool ContactSolver::s_wideSetUp = true;
 bool ContactSolver::s_packLevels = true;

@@ -2,6 +2,7 @@
 // codes for unknown scene names, bad frame counts and bad scene files.
 #include "app/CliRunner.h"
 
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -212,6 +213,23 @@ private slots:
         QCOMPARE(r.exitCode, 0);
         QVERIFY(r.err.contains("stack20"));
         QVERIFY(r.out.startsWith("scene=stack20 "));
+    }
+
+    // Before the scenes, a line names the CPU and the lanes of RigidLab's contact sweeps, which the ratios to Bullet
+    // depend on (eight only with AVX-512); --quiet leaves it out with the rest of stderr's report.
+    void headerNamesTheCpuAndTheSweeps() {
+        const Run r = runCli({"bench", "stack20", "--frames", "2", "--runs", "1", "--no-bullet"});
+        QCOMPARE(r.exitCode, 0);
+        const QRegularExpression header("^bench: CPU (.+), (\\d+) logical CPUs; RigidLab's contact sweeps in (4|8) "
+                                        "lanes of doubles \\((AVX-512|AVX2|SSE2|portable)\\)$",
+                                        QRegularExpression::MultilineOption);
+        const QRegularExpressionMatch m = header.match(QString::fromUtf8(r.err));
+        QVERIFY2(m.hasMatch(), r.err.constData());
+        QVERIFY(m.captured(2).toInt() >= 1);
+        QCOMPARE(m.captured(3) == "8", m.captured(4) == "AVX-512");
+        const Run quiet = runCli({"bench", "stack20", "--frames", "2", "--runs", "1", "--no-bullet", "--quiet"});
+        QCOMPARE(quiet.exitCode, 0);
+        QVERIFY(!quiet.err.contains("logical CPUs"));
     }
 
     void sceneFile() {

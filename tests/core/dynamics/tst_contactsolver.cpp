@@ -772,6 +772,23 @@ private slots:
     // storeImpulses() writes the same impulses to the manifolds whether the solver kept its constraint records or
     // set the constraints up straight into the batches (restitution off), and however its parallelFor cuts up the
     // manifolds: the reference is the sequential sweep, stored from the records.
+    // The benchmark's report of the sweeps names the lanes a solver prepared on this CPU uses, and the instruction set
+    // that gives them (eight lanes only with AVX-512); with the lanes held to four, it says four.
+    void sweepsDescriptionNamesTheLanesInUse() {
+        const Problem p = makeProblem(20, 40, false, 5);
+        for (const int widest : {8, 4}) {
+            ContactSolver::setWidestLanes(widest);
+            ContactSolver solver;
+            prepare(solver, p);
+            const QString description = QString::fromStdString(ContactSolver::sweepsDescription());
+            QVERIFY2(description.startsWith(QString("%1 lanes of doubles (").arg(solver.laneWidth())),
+                     qPrintable(description));
+            QCOMPARE(description.contains("(AVX-512)"), solver.laneWidth() == 8);
+            QVERIFY(widest == 8 || solver.laneWidth() == 4);
+        }
+        ContactSolver::setWidestLanes(8);
+    }
+
     void storedImpulsesAreTheSequentialOnes_data() {
         QTest::addColumn<int>("lanes");
         QTest::addColumn<bool>("kept");

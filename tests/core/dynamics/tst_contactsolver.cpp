@@ -5,6 +5,7 @@
 #include "dynamics/ContactSolver.h"
 #include "world/ThreadTeam.h"
 
+#include <QScopeGuard>
 #include <QTest>
 
 #include <algorithm>
@@ -769,13 +770,11 @@ private slots:
         ContactSolver::setWidestLanes(8);
     }
 
-    // storeImpulses() writes the same impulses to the manifolds whether the solver kept its constraint records or
-    // set the constraints up straight into the batches (restitution off), and however its parallelFor cuts up the
-    // manifolds: the reference is the sequential sweep, stored from the records.
     // The benchmark's report of the sweeps names the lanes a solver prepared on this CPU uses, and the instruction set
     // that gives them (eight lanes only with AVX-512); with the lanes held to four, it says four.
     void sweepsDescriptionNamesTheLanesInUse() {
         const Problem p = makeProblem(20, 40, false, 5);
+        const auto restore = qScopeGuard([] { ContactSolver::setWidestLanes(8); });
         for (const int widest : {8, 4}) {
             ContactSolver::setWidestLanes(widest);
             ContactSolver solver;
@@ -786,9 +785,11 @@ private slots:
             QCOMPARE(description.contains("(AVX-512)"), solver.laneWidth() == 8);
             QVERIFY(widest == 8 || solver.laneWidth() == 4);
         }
-        ContactSolver::setWidestLanes(8);
     }
 
+    // storeImpulses() writes the same impulses to the manifolds whether the solver kept its constraint records or
+    // set the constraints up straight into the batches (restitution off), and however its parallelFor cuts up the
+    // manifolds: the reference is the sequential sweep, stored from the records.
     void storedImpulsesAreTheSequentialOnes_data() {
         QTest::addColumn<int>("lanes");
         QTest::addColumn<bool>("kept");

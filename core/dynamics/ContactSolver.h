@@ -361,8 +361,9 @@ public:
     // The lanes of the batches: 8 where the CPU runs x86-64-v4 (AVX-512), else 4 (chosen by buildBatches()).
     int laneWidth() const { return m_width; }
     // The sweeps this CPU runs, for benchmark reports: "8 lanes of doubles (AVX-512)", "4 lanes of doubles (AVX2)" or,
-    // on an x86-64 CPU without AVX2, "(SSE2)". (The frames are the same whichever runs; the time is not: the sweeps
-    // were 23 % of ramps.obj's step and 46 % of large_pyramid's with four lanes, README "Whole steps".)
+    // on an x86-64 CPU without AVX2, "(SSE2)"; "(portable)" from a compiler other than GCC or off x86-64. (The frames
+    // are the same whichever runs; the time is not: the sweeps were 23 % of ramps.obj's step and 46 % of
+    // large_pyramid's with four lanes, README "Whole steps".)
     static std::string sweepsDescription();
     // Batches whose bodies are all SolverBody::isotropic (the sweeps' shorter inverse inertia products).
     size_t isotropicBatchCount() const;

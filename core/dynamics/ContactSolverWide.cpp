@@ -58,11 +58,20 @@ template <class V, class Mask>
 RL_LANES_INLINE V select(const Mask& m, const V& x, const V& y) { // m ? x : y, per lane
     return m ? x : y;
 }
+// W floats widened exactly, lane by lane. (GCC 12 lowers __builtin_convertvector from floats to doubles by halves:
+// with four lanes, two two-lane conversions through the stack and an insert, where this loop becomes one
+// vcvtps2pd; with eight, two four-lane ones where this is one.)
+template <int W, class Floats>
+RL_LANES_INLINE typename Vec<W>::V widenFloats(const Floats& f) {
+    typename Vec<W>::V r;
+#pragma GCC unroll 8
+    for (int l = 0; l < W; ++l)
+        r[l] = static_cast<Real>(f[l]);
+    return r;
+}
 template <int W>
 RL_LANES_INLINE typename Vec<W>::V widen(const ContactSolver::FloatLanes<W>& lanes) { // exactly
-    typename Vec<W>::F f;
-    std::memcpy(&f, lanes.v, sizeof f);
-    return __builtin_convertvector(f, typename Vec<W>::V);
+    return widenFloats<W>(lanes.v);
 }
 // x + y added in floats, then widened exactly.
 template <int W>
@@ -71,7 +80,7 @@ RL_LANES_INLINE typename Vec<W>::V widenSum(const ContactSolver::FloatLanes<W>& 
     typename Vec<W>::F f, g;
     std::memcpy(&f, x.v, sizeof f);
     std::memcpy(&g, y.v, sizeof g);
-    return __builtin_convertvector(f + g, typename Vec<W>::V);
+    return widenFloats<W>(f + g);
 }
 #else
 template <int W>
@@ -817,7 +826,7 @@ namespace {
 // x rounded to the nearest float, per lane: what prepare()'s roundedToFloat() gives each lane.
 template <int W>
 RL_LANES_INLINE typename Vec<W>::V rounded(const typename Vec<W>::V& x) {
-    return __builtin_convertvector(__builtin_convertvector(x, typename Vec<W>::F), typename Vec<W>::V);
+    return widenFloats<W>(__builtin_convertvector(x, typename Vec<W>::F));
 }
 template <int W>
 RL_LANES_INLINE L3<typename Vec<W>::V> rounded(const L3<typename Vec<W>::V>& v) {

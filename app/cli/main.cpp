@@ -1,6 +1,7 @@
 // rigidlab-cli: the headless front end. Dispatches to one subcommand; exit codes: 0 ok, 1 bad input or failed run,
 // 2 bad usage (DESIGN.md §6).
 #include "Cli.h"
+#include "HugePages.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -72,6 +73,7 @@ void printUsage(FILE* out) {
 } // namespace
 
 int main(int argc, char* argv[]) {
+    rl::app::useHugePages(argv);
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName("rigidlab-cli");
     QCoreApplication::setApplicationVersion(RIGIDLAB_VERSION);

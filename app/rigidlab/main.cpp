@@ -1,4 +1,5 @@
 // The RigidLab editor: sets up the application and opens the scene named on the command line, if any.
+#include "HugePages.h"
 #include "MainWindow.h"
 #include "settings/Translation.h"
 
@@ -11,6 +12,7 @@
 #include <QTranslator>
 
 int main(int argc, char* argv[]) {
+    rl::app::useHugePages(argv);
     // The viewport needs a 3.3 core context; the format must be set before the application exists.
     QSurfaceFormat format;
     format.setVersion(3, 3);

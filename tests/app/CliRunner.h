@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QProcess>
+#include <QProcessEnvironment>
 #include <QStringList>
 
 namespace rl::test {
@@ -13,8 +14,10 @@ struct CliRun {
     QByteArray err;
 };
 
-inline CliRun runCli(const QStringList& args) {
+inline CliRun runCli(const QStringList& args,
+                     const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) {
     QProcess p;
+    p.setProcessEnvironment(environment);
     p.start(QStringLiteral(RL_CLI_PATH), args);
     CliRun r;
     if (!p.waitForFinished(120000)) {

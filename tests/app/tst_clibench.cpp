@@ -232,6 +232,58 @@ private slots:
         QVERIFY(!quiet.err.contains("logical CPUs"));
     }
 
+    // On Linux with glibc 2.35 or later, where the kernel gives transparent huge pages on request ("madvise"), the CLI
+    // starts itself again with glibc.malloc.hugetlb=1 (app/HugePages.h), unless told not to or already given the
+    // tunable; bench's header names the kernel's setting and the tunable as the process ended up with it.
+    void memoryPagesLine_data() {
+        QTest::addColumn<QString>("optOut");
+        QTest::addColumn<QString>("tunables");
+        QTest::addColumn<QString>("expected"); // "asked": hugetlb=1 where the system gives the pages, else not set
+        QTest::newRow("default") << QString() << QString() << QStringLiteral("asked");
+        QTest::newRow("other tunables") << QString() << QStringLiteral("glibc.malloc.tcache_count=5")
+                                        << QStringLiteral("asked");
+        QTest::newRow("RIGIDLAB_HUGE_PAGES=0")
+            << QStringLiteral("0") << QString() << QStringLiteral("glibc.malloc.hugetlb not set");
+        QTest::newRow("RIGIDLAB_HUGE_PAGES=1") << QStringLiteral("1") << QString() << QStringLiteral("asked");
+        QTest::newRow("the user's tunable")
+            << QString() << QStringLiteral("glibc.malloc.hugetlb=0") << QStringLiteral("glibc.malloc.hugetlb=0");
+    }
+    void memoryPagesLine() {
+        QFETCH(QString, optOut);
+        QFETCH(QString, tunables);
+        QFETCH(QString, expected);
+        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+        environment.remove("RIGIDLAB_HUGE_PAGES");
+        environment.remove("GLIBC_TUNABLES");
+        if (!optOut.isEmpty())
+            environment.insert("RIGIDLAB_HUGE_PAGES", optOut);
+        if (!tunables.isEmpty())
+            environment.insert("GLIBC_TUNABLES", tunables);
+        // What the system says, read here as the CLI reads it.
+        QString kernel = "unknown";
+        QFile setting("/sys/kernel/mm/transparent_hugepage/enabled");
+        if (setting.open(QIODevice::ReadOnly)) {
+            const QRegularExpressionMatch m = QRegularExpression("\\[(\\w+)\\]").match(setting.readAll());
+            if (m.hasMatch())
+                kernel = m.captured(1);
+        }
+        bool glibcGives = false;
+#if defined(__linux__) && defined(__GLIBC__)
+        glibcGives = __GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 35);
+#endif
+        if (expected == "asked")
+            expected = kernel == "madvise" && glibcGives ? "glibc.malloc.hugetlb=1" : "glibc.malloc.hugetlb not set";
+        const Run r = runCli({"bench", "stack20", "--frames", "2", "--runs", "1", "--no-bullet"}, environment);
+        QCOMPARE(r.exitCode, 0);
+        const QRegularExpression line("^bench: memory pages: (.+)$", QRegularExpression::MultilineOption);
+        const QRegularExpressionMatch m = line.match(QString::fromUtf8(r.err));
+        QVERIFY2(m.hasMatch(), r.err.constData());
+#if defined(__linux__)
+        QCOMPARE(m.captured(1), QString("transparent huge pages %1, %2").arg(kernel, expected));
+#endif
+        QVERIFY(r.out.startsWith("scene=stack20 "));
+    }
+
     void sceneFile() {
         const Run r = runCli({"bench", RL_SOURCE_DIR "/resources/scenes/stack.obj", "--frames", "3", "--quiet"});
         QCOMPARE(r.exitCode, 0);

@@ -20,9 +20,8 @@ namespace rl::app {
 // reads only when a process starts: so where the kernel gives such pages on request (transparent_hugepage "madvise",
 // the setting of Debian and of the machines measured), the process sets it and executes itself again, once, with
 // the same arguments. Measured on an AMD EPYC (Zen 3) machine, 2026-12-07: large_pyramid's first 45 frames faster
-// in 21 of 28 pairs of runs at once on the two CPUs, the pairs' median step 30.1 ms against 32.6 and 30.4 against
-// 31.6 (tests/benchmarks/LOG.md). The frames are the same either way (the pages change where data lie, not what is
-// computed).
+// in 28 of 40 pairs of runs at once on the two CPUs, 32.2 ms a step against 33.8 on average (tests/benchmarks/LOG.md).
+// The frames are the same either way (the pages change where data lie, not what is computed).
 //
 // Left alone: other systems; the tunable already given (by the user, or by the first start); RIGIDLAB_HUGE_PAGES=0;
 // a run under valgrind, whose tools would lose the restarted process; the kernel's setting "always" (nothing to ask

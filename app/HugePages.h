@@ -14,6 +14,24 @@
 
 namespace rl::app {
 
+// The kernel's setting for transparent huge pages, the bracketed word of /sys/kernel/mm/transparent_hugepage/enabled
+// ("always", "madvise" or "never"), or "unknown".
+inline std::string transparentHugePagesMode() {
+#if defined(__linux__)
+    std::FILE* setting = std::fopen("/sys/kernel/mm/transparent_hugepage/enabled", "r");
+    if (!setting)
+        return "unknown";
+    char mode[128] = {};
+    const size_t read = std::fread(mode, 1, sizeof mode - 1, setting);
+    std::fclose(setting);
+    const std::string text(mode, read);
+    const size_t open = text.find('['), close = text.find(']');
+    if (open != std::string::npos && close != std::string::npos && close > open)
+        return text.substr(open + 1, close - open - 1);
+#endif
+    return "unknown";
+}
+
 // A big scene's step reads its contact manifolds and bodies in the solver's order, not in the order they lie in
 // memory, and on 4 KiB pages the 5,050-cube pyramid's step touches more pages than the core's TLB holds. glibc
 // (2.35 on) puts its heap on transparent 2 MiB pages when the tunable glibc.malloc.hugetlb=1 is set, which its loader
@@ -40,14 +58,7 @@ inline void useHugePages(char* argv[]) {
     int major = 0, minor = 0;
     if (std::sscanf(gnu_get_libc_version(), "%d.%d", &major, &minor) != 2 || major < 2 || (major == 2 && minor < 35))
         return;
-    std::FILE* setting = std::fopen("/sys/kernel/mm/transparent_hugepage/enabled", "r");
-    if (!setting)
-        return;
-    char mode[128] = {};
-    const size_t read = std::fread(mode, 1, sizeof mode - 1, setting);
-    std::fclose(setting);
-    mode[read] = '\0';
-    if (!std::strstr(mode, "[madvise]"))
+    if (transparentHugePagesMode() != "madvise")
         return;
     std::string value = "glibc.malloc.hugetlb=1";
     if (tunables && *tunables)
@@ -65,16 +76,6 @@ inline void useHugePages(char* argv[]) {
 // e.g. "transparent huge pages madvise, glibc.malloc.hugetlb=1" (or "... hugetlb not set").
 inline std::string hugePagesDescription() {
 #if defined(__linux__) && defined(__GLIBC__)
-    std::string kernel = "unknown";
-    if (std::FILE* setting = std::fopen("/sys/kernel/mm/transparent_hugepage/enabled", "r")) {
-        char mode[128] = {};
-        const size_t read = std::fread(mode, 1, sizeof mode - 1, setting);
-        std::fclose(setting);
-        const std::string text(mode, read);
-        const size_t open = text.find('['), close = text.find(']');
-        if (open != std::string::npos && close != std::string::npos && close > open)
-            kernel = text.substr(open + 1, close - open - 1);
-    }
     std::string tunable = "glibc.malloc.hugetlb not set";
     if (const char* tunables = std::getenv("GLIBC_TUNABLES")) {
         const std::string all(tunables), key = "glibc.malloc.hugetlb=";
@@ -83,7 +84,7 @@ inline std::string hugePagesDescription() {
             tunable = all.substr(at, end == std::string::npos ? std::string::npos : end - at);
         }
     }
-    return "transparent huge pages " + kernel + ", " + tunable;
+    return "transparent huge pages " + transparentHugePagesMode() + ", " + tunable;
 #else
     return "not known on this system";
 #endif

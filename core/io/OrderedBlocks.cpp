@@ -42,14 +42,17 @@ bool writeBlocksInOrder(size_t count, int threads, const std::function<void(size
     size_t nextBlock = 0; // the next block to format
     size_t written = 0;   // blocks written so far
     bool stop = false;
-    bool cancelled = false;     // a write() returned false
-    std::exception_ptr failure; // the first exception of a format() or write(), rethrown once the workers are done
+    bool cancelled = false; // a write() returned false
+    // A format() that throws for block k ends the output as on one thread: blocks 0 .. k - 1 are still written, in
+    // order, and nothing after. Of several failing blocks the lowest one's exception is the one rethrown.
+    size_t failedBlock = count;
+    std::exception_ptr failure; // the exception of a format() (block failedBlock) or of write(), rethrown at the end
     std::mutex mutex;
     std::condition_variable changed;
 
     // Under the lock: the next block to format, if its slot is free, else none.
     const auto claim = [&]() -> std::optional<size_t> {
-        if (stop || nextBlock >= count || nextBlock >= written + slots)
+        if (stop || nextBlock >= failedBlock || nextBlock >= written + slots)
             return std::nullopt;
         return nextBlock++;
     };
@@ -66,9 +69,10 @@ bool writeBlocksInOrder(size_t count, int threads, const std::function<void(size
         {
             std::lock_guard lock(mutex);
             ready[block % slots] = 1;
-            if (error && !failure)
+            if (error && block < failedBlock) {
+                failedBlock = block;
                 failure = error;
-            stop = stop || error;
+            }
         }
         changed.notify_all();
     };
@@ -77,7 +81,7 @@ bool writeBlocksInOrder(size_t count, int threads, const std::function<void(size
             std::optional<size_t> block;
             {
                 std::unique_lock lock(mutex);
-                changed.wait(lock, [&] { return stop || nextBlock >= count || nextBlock < written + slots; });
+                changed.wait(lock, [&] { return stop || nextBlock >= failedBlock || nextBlock < written + slots; });
                 block = claim();
                 if (!block)
                     return;
@@ -94,7 +98,7 @@ bool writeBlocksInOrder(size_t count, int threads, const std::function<void(size
         std::optional<size_t> block;
         {
             std::unique_lock lock(mutex);
-            if (stop || written == count)
+            if (stop || written == failedBlock)
                 break;
             if (!ready[written % slots]) {
                 block = claim();
@@ -121,10 +125,10 @@ bool writeBlocksInOrder(size_t count, int threads, const std::function<void(size
             std::lock_guard lock(mutex);
             ready[slot] = 0;
             ++written;
-            if (error && !failure)
-                failure = error;
+            if (error)
+                failure = error; // a format() failure is of a later block, not yet written: this one comes first
             cancelled = cancelled || !ok;
-            stop = stop || !ok;
+            stop = stop || !ok || error;
         }
         changed.notify_all();
     }

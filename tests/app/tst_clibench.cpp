@@ -232,6 +232,16 @@ private slots:
         QVERIFY(!quiet.err.contains("logical CPUs"));
     }
 
+    // --lanes 4 keeps the sweeps to four lanes whatever the CPU: an AVX-512 machine then times what an AVX2 one runs.
+    void lanesOptionKeepsTheSweepsToFourLanes() {
+        const Run r = runCli({"bench", "pyramid20", "--frames", "2", "--runs", "1", "--no-bullet", "--lanes", "4"});
+        QCOMPARE(r.exitCode, 0);
+        const QRegularExpression header("RigidLab's contact sweeps in 4 lanes of doubles \\((AVX2|SSE2|portable)\\)$",
+                                        QRegularExpression::MultilineOption);
+        QVERIFY2(header.match(QString::fromUtf8(r.err)).hasMatch(), r.err.constData());
+        QVERIFY(r.out.startsWith("scene=pyramid20 "));
+    }
+
     // On Linux with glibc 2.35 or later, where the kernel gives transparent huge pages on request ("madvise"), the CLI
     // starts itself again with glibc.malloc.hugetlb=1 (app/HugePages.h), unless told not to or already given the
     // tunable; bench's header names the kernel's setting and the tunable as the process ended up with it.
@@ -301,6 +311,8 @@ private slots:
         QTest::newRow("runs zero") << QStringList{"bench", "stack20", "--runs", "0"};
         QTest::newRow("runs not a number") << QStringList{"bench", "stack20", "--runs", "two"};
         QTest::newRow("runs too many") << QStringList{"bench", "stack20", "--runs", "101"};
+        QTest::newRow("lanes 6") << QStringList{"bench", "stack20", "--lanes", "6"};
+        QTest::newRow("lanes not a number") << QStringList{"bench", "stack20", "--lanes", "four"};
         QTest::newRow("scaling with scenes") << QStringList{"bench", "--scaling", "stack20"};
     }
     void usageErrors() {

@@ -12,8 +12,10 @@ namespace rl {
 // write(text) for each block in block order on the calling thread. At most 2 x threads blocks are held at once, so
 // memory stays flat however long the output is. write() returning false stops the work: the blocks after it are
 // neither formatted nor written, and the call returns false. With threads <= 1 (or one block) everything runs on
-// the calling thread. format() may only read what is shared. An exception from format() or write() stops the work
-// the same way and is rethrown on the calling thread once every worker has finished.
+// the calling thread. format() may only read what is shared. An exception from write() stops the work the same way;
+// one from format() for block k stops it as on one thread: blocks 0 .. k - 1 are still written and nothing after
+// (of several failing blocks, the lowest one counts). The exception is rethrown on the calling thread once every
+// worker has finished.
 bool writeBlocksInOrder(size_t count, int threads, const std::function<void(size_t block, std::string& text)>& format,
                         const std::function<bool(const std::string& text)>& write);
 

@@ -91,6 +91,9 @@ private slots:
         QTest::newRow("turned cube, six decimals") << 2 << true;
         QTest::newRow("slanted parallelepiped") << 3 << false;
         QTest::newRow("wedge") << 4 << false;
+        // Far from the origin: the faces' offsets multiply the normals' rounding by the distance (detectBox()).
+        QTest::newRow("turned cube 7 m out, six decimals") << 5 << true;
+        QTest::newRow("Blender's turned box 7 m out (boxes1000.obj's Box.004)") << 6 << true;
     }
     void boxesAreRecognised() {
         QFETCH(int, kind);
@@ -103,11 +106,20 @@ private slots:
         for (Vec3& c : corners) {
             if (kind == 2)
                 c = glm::round((turn * c + Vec3(1.5, 0.25, -2.0)) * 1e6) * 1e-6;
+            if (kind == 5)
+                c = glm::round((turn * c + Vec3(-2.5, 1.0, 7.3)) * 1e6) * 1e-6;
             if (kind == 3)
                 c.x += 0.5 * c.y; // a parallelepiped whose faces do not meet at right angles
         }
         if (kind == 4)
             corners.resize(6); // a wedge: the four corners at z = -h.z and two at z = +h.z
+        // Its corners as Blender 3.4 wrote them (tests/data/acceptance/boxes1000.obj): sides 0.39036, 0.45424 and
+        // 0.70806 m, square to 2.6e-6 rad.
+        if (kind == 6)
+            corners = {{-2.506817, 0.605075, 7.470549}, {-2.825663, 0.823691, 7.416446},
+                       {-2.248507, 0.828295, 6.850225}, {-2.567353, 1.046911, 6.796122},
+                       {-2.303796, 0.953088, 7.680320}, {-2.622643, 1.171705, 7.626216},
+                       {-2.045486, 1.176309, 7.059996}, {-2.364332, 1.394925, 7.005892}};
         Shape s = kind == 0 ? mustShape(makeBox(h)) : mustShape(makeHull(computeConvexHull(corners)));
         QCOMPARE(s.polyhedron->isBox, box);
         if (!box)
@@ -115,8 +127,9 @@ private slots:
         const ConvexPolyhedron::BoxFeatures& f = s.polyhedron->box;
         Real halves[3] = {f.half[0], f.half[1], f.half[2]};
         std::sort(halves, halves + 3);
-        QVERIFY(std::abs(halves[0] - 0.1) < 1e-5 && std::abs(halves[1] - 0.2) < 1e-5 &&
-                std::abs(halves[2] - 0.3) < 1e-5);
+        const Vec3 expected = kind == 6 ? Vec3(0.195181, 0.227120, 0.354031) : Vec3(0.1, 0.2, 0.3);
+        QVERIFY(std::abs(halves[0] - expected.x) < 1e-5 && std::abs(halves[1] - expected.y) < 1e-5 &&
+                std::abs(halves[2] - expected.z) < 1e-5);
         QVERIFY(glm::dot(glm::cross(f.axis[0], f.axis[1]), f.axis[2]) > 1.0 - 1e-12);
         for (int i = 0; i < 3; ++i) {
             QVERIFY(glm::dot(s.polyhedron->faces[f.face[i][0]].normal, f.axis[i]) > 1.0 - 1e-6);
@@ -146,7 +159,9 @@ private slots:
                 widest = std::max({widest, vertexBox.min[axis] - got.min[axis], got.max[axis] - vertexBox.max[axis]});
             }
         }
-        QVERIFY2(widest < (kind == 2 ? 1e-5 : 1e-12), qPrintable(QString::number(widest)));
+        // (Six decimals 7 m out: the features fit the corners to 2e-5 of the size along each axis, detectBox().)
+        const Real slack = kind == 2 ? 1e-5 : kind >= 5 ? 2e-5 : 1e-12;
+        QVERIFY2(widest < slack, qPrintable(QString::number(widest)));
     }
 
     // Two boxes measured by projection give the general query's answer: the same kind of feature, the same face or

@@ -2,6 +2,7 @@
 // body count, names, anchors, materials, vertex means, hull volumes and centres of mass to 1e-6.
 #include "io/SceneImport.h"
 #include "scene/BodyProperties.h"
+#include "world/World.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -82,6 +83,27 @@ private slots:
         }
         QCOMPARE(anchorCount, anchors);
         QCOMPARE(concaveCount, concave);
+    }
+
+    // Boxes that Blender turned and wrote out with six decimals, far from the origin, are recognised as boxes, so the
+    // narrowphase takes the box SAT for them (detectBox() in Shape.cpp). Of boxes1000.obj's 1,000 boxes 474 were
+    // before the fit from the vertex mean, 988 now; the other 12 came out of the hull with one face in two triangles.
+    void turnedBlenderBoxesAreBoxes() {
+        Result<Scene> scene = importScene(RL_TEST_DATA_DIR "/acceptance/boxes1000.obj");
+        QVERIFY(scene.ok());
+        Result<World> world = World::create(*scene);
+        QVERIFY(world.ok());
+        int boxes = 0, named = 0;
+        for (size_t i = 0; i < world->bodyCount(); ++i) {
+            if (world->name(i).rfind("Box", 0) != 0)
+                continue;
+            ++named;
+            const Shape& shape = world->shape(i);
+            boxes += shape.isPolyhedral() && shape.polyhedron->isBox ? 1 : 0;
+        }
+        qInfo("boxes1000.obj: %d of %d boxes recognised as boxes", boxes, named);
+        QCOMPARE(named, 1000);
+        QVERIFY(boxes >= 985);
     }
 };
 

@@ -128,7 +128,7 @@ bool writeBlocksInOrder(size_t count, int threads, const std::function<void(size
             if (error)
                 failure = error; // a format() failure is of a later block, not yet written: this one comes first
             cancelled = cancelled || !ok;
-            stop = stop || !ok || error;
+            stop = stop || !ok; // (ok stays false where write() threw)
         }
         changed.notify_all();
     }

@@ -71,6 +71,11 @@ SatResult chooseAxis(const Shape& a, const Shape& b, const SatOptions& options, 
     }
     if (rim.separation > edgeRelative * std::max(bestFace, edges.separation) + bias && rim.separation > best.separation)
         best = rim;
+    if (best.feature == SatFeature::FaceA || best.feature == SatFeature::FaceB) {
+        const SatResult& rival = best.feature == SatFeature::FaceA ? faceB : faceA;
+        best.rivalSeparation = rival.separation;
+        best.rivalNormal = rival.normal;
+    }
     return best;
 }
 
@@ -201,6 +206,7 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
             r.pointB = xfA.apply(r.pointB);
         }
         r.normal = xfA.rotate(r.normal);
+        r.rivalNormal = xfA.rotate(r.rivalNormal);
         return r;
     }
     thread_local std::vector<Vec3> bv, bn;
@@ -219,6 +225,7 @@ SatResult satPolyhedra(const Shape& a, const Transform& xfA, const Shape& b, con
             r.pointB = xfA.apply(r.pointB);
         }
         r.normal = xfA.rotate(r.normal);
+        r.rivalNormal = xfA.rotate(r.rivalNormal);
         return r;
     };
 

@@ -38,6 +38,10 @@ struct SatResult {
     uint32_t edgeB = 0;
     Vec3 pointA{0.0}; // EdgePair: closest points of the two edges, world
     Vec3 pointB{0.0};
+    // FaceA and FaceB: the other shape's best face axis, which lost the choice (normal world, from A to B; separation
+    // -infinity if none). Where the two nearly tie at an angle, the faces meet rim to rim (collidePolyhedra()).
+    Real rivalSeparation = -std::numeric_limits<Real>::infinity();
+    Vec3 rivalNormal{0.0};
 };
 
 // Both shapes must be polyhedral (boxes or hulls). A flat polygon only offers the face whose normal points to the

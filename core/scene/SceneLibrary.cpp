@@ -87,17 +87,20 @@ Scene slabOnTwoCubes() {
 }
 
 Scene cardHouse(int levels, Real friction) {
+    // Between A-frame apexes on one level: a card's length, so that the flat cards bridging them lie end to end, each
+    // end on the top edge of one leaning card. (At 0.34 m neighbouring flat cards lay 6 cm into each other, 2 mm
+    // deep, from the first step: at 48 substeps the house fell, at 24 its cards moved 8 mm; 0.14 and 0.24 mm now.)
+    return cardHouse(levels, friction, 18.0, 0.4);
+}
+
+Scene cardHouse(int levels, Real friction, Real tiltDegrees, Real spacing) {
     Scene s;
     s.materials.push_back({"Card", 700.0, friction, 0.0});
     s.bodies.push_back(floorBox());
     s.bodies.back().material = "Card";
     const Real half = 0.2, thick = 0.001, width = 0.15; // 0.4 m tall, 2 mm thick, 0.3 m wide cards
-    const Real tilt = glm::radians(18.0);
+    const Real tilt = glm::radians(tiltDegrees);
     const Real lean = half * std::sin(tilt), rise = half * std::cos(tilt);
-    // Between A-frame apexes on one level: a card's length, so that the flat cards bridging them lie end to end, each
-    // end on the top edge of one leaning card. (At 0.34 m neighbouring flat cards lay 6 cm into each other, 2 mm
-    // deep, from the first step: at 48 substeps the house fell, at 24 its cards moved 8 mm; 0.14 and 0.24 mm now.)
-    const Real spacing = 2.0 * half;
     // The leaning cards' highest corners (their outer top edges) are 2 rise + 2 thick sin(tilt) above the base.
     const Real frameHeight = 2.0 * rise + 2.0 * thick * std::sin(tilt);
     int n = 0;

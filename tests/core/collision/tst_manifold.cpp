@@ -594,6 +594,51 @@ private slots:
         }
     }
 
+    // Two 2 mm cards leaning on each other meet rim to rim: their inner faces separate them equally well, so the
+    // contact's normal is the bisector, level, whichever card is A, touching, a hair apart or a hair into each other
+    // (turnWedgeNormal() in Collide.cpp; before, the SAT's tie-break gave A's face normal, tilted by the lean). A
+    // card's top edge 5 mm down the other's face keeps that face's normal.
+    void wedgeContactsTakeTheBisector_data() {
+        QTest::addColumn<Real>("tilt");    // each card's lean from the vertical, degrees
+        QTest::addColumn<Real>("overlap"); // how far the top edges reach past each other, m (< 0: apart)
+        QTest::addColumn<Real>("down");    // the left card moved this far down the right card's face, m
+        QTest::addColumn<bool>("swap");    // the right card is A
+        for (const Real tilt : {10.0, 25.0, 40.0})
+            for (const Real overlap : {-1e-4, 0.0, 5e-5})
+                for (const bool swap : {false, true})
+                    QTest::addRow("%.0f degrees, overlap %g m%s", tilt, overlap, swap ? ", swapped" : "")
+                        << tilt << overlap << 0.0 << swap;
+        for (const Real tilt : {10.0, 25.0, 40.0})
+            for (const bool swap : {false, true})
+                QTest::addRow("%.0f degrees, edge 5 mm down the face%s", tilt, swap ? ", swapped" : "")
+                    << tilt << 1e-5 << 0.005 << swap;
+    }
+    void wedgeContactsTakeTheBisector() {
+        QFETCH(Real, tilt);
+        QFETCH(Real, overlap);
+        QFETCH(Real, down);
+        QFETCH(bool, swap);
+        const Real th = tilt * kPi / 180.0, half = 0.2, thick = 0.001;
+        const Shape card = mustShape(makeBox(Vec3(thick, half, 0.15)));
+        // Centres placed so that the inner top edges meet at x = 0 (each reaching `overlap` / 2 past it).
+        const Real dx = half * std::sin(th) + thick * std::cos(th) - 0.5 * overlap;
+        const Real y = half * std::cos(th) + thick * std::sin(th);
+        const Vec3 downRightFace(std::sin(th), -std::cos(th), 0.0); // down the right card's inner face
+        const Vec3 rightNormal(-std::cos(th), -std::sin(th), 0.0);  // the right card's inner face, outward
+        const Transform left =
+            Transform::fromQuat(Vec3(-dx, y, 0.0) + down * downRightFace, axisAngle(Vec3(0, 0, 1), -th));
+        const Transform right = Transform::fromQuat(Vec3(dx, y, 0.0), axisAngle(Vec3(0, 0, 1), th));
+        Manifold m;
+        QVERIFY(swap ? collide(card, right, card, left, 0.01, m) : collide(card, left, card, right, 0.01, m));
+        QVERIFY(m.pointCount >= 1);
+        QVERIFY(swap ? manifoldIsConsistent(m, right, left) : manifoldIsConsistent(m, left, right));
+        const Vec3 leftToRight = down > 0.0 ? -rightNormal : Vec3(1, 0, 0);
+        const Vec3 expected = swap ? -leftToRight : leftToRight;
+        qInfo("normal (%.6f, %.6f, %.6f), %d points, separation %.3g mm", m.normal.x, m.normal.y, m.normal.z,
+              m.pointCount, 1e3 * m.points[0].separation);
+        QVERIFY(angleDegrees(m.normal, expected) < 1e-6);
+    }
+
     // Hulls from computeConvexHull (coplanar faces merged into polygons) behave like the hand-built ones: a box
     // from its eight corners plus interior points, and a Blender plane (four coplanar points) as a flat anchor.
     void computedHulls() {

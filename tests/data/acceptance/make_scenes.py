@@ -275,25 +275,33 @@ export_obj("mixed_shapes.obj")
 # Card house: 40 cards of 2 mm x 0.3 m x 0.4 m, five levels of A-frames (two cards leaning 18 degrees from the
 # vertical, tops touching) with flat cards bridging neighbouring apexes (14, 11, 8, 5 and 2 cards a level), as a user
 # stacks them: every card touching what carries it, none inside another. Friction 0.7 comes from card_house.rlscene.
-reset()
-floor_box()
-half, thick, width, tilt = 0.2, 0.001, 0.15, math.radians(18.0)
-base = 0.0
-for level in range(5):
-    frames = 5 - level
-    x0 = -0.5 * (frames - 1) * 2 * half
-    for f in range(frames):
-        apex = x0 + f * 2 * half
-        dx = half * math.sin(tilt) + thick / math.cos(tilt)
-        z = base + half * math.cos(tilt) + thick * math.sin(tilt)
-        for side in (-1, 1):  # the left card's top leans to +x: a turn of +tilt about Blender's y
-            cube("Card", location=(apex + side * dx, 0, z), scale=(2 * thick, 2 * width, 2 * half),
-                 rotation=(0, -side * tilt, 0))
-    base += 2 * half * math.cos(tilt) + 2 * thick * math.sin(tilt)
-    for f in range(frames - 1):
-        cube("Card", location=(x0 + (f + 0.5) * 2 * half, 0, base + thick), scale=(2 * half, 2 * width, 2 * thick))
-    base += 2 * thick
-export_obj("card_house.obj")
+# The same house with the cards leaning 20 and 24 degrees (card_house_20deg.obj, card_house_24deg.obj) for the
+# JSON scenes of lower friction below.
+def card_house(name, degrees):
+    reset()
+    floor_box()
+    half, thick, width, tilt = 0.2, 0.001, 0.15, math.radians(degrees)
+    base = 0.0
+    for level in range(5):
+        frames = 5 - level
+        x0 = -0.5 * (frames - 1) * 2 * half
+        for f in range(frames):
+            apex = x0 + f * 2 * half
+            dx = half * math.sin(tilt) + thick / math.cos(tilt)
+            z = base + half * math.cos(tilt) + thick * math.sin(tilt)
+            for side in (-1, 1):  # the left card's top leans to +x: a turn of +tilt about Blender's y
+                cube("Card", location=(apex + side * dx, 0, z), scale=(2 * thick, 2 * width, 2 * half),
+                     rotation=(0, -side * tilt, 0))
+        base += 2 * half * math.cos(tilt) + 2 * thick * math.sin(tilt)
+        for f in range(frames - 1):
+            cube("Card", location=(x0 + (f + 0.5) * 2 * half, 0, base + thick), scale=(2 * half, 2 * width, 2 * thick))
+        base += 2 * thick
+    export_obj(name)
+
+
+card_house("card_house.obj", 18.0)
+card_house("card_house_20deg.obj", 20.0)
+card_house("card_house_24deg.obj", 24.0)
 
 # 1,000 random boxes dropped on a floor box: a 10 x 10 x 10 grid 1.6 m apart, the lowest layer 1 m up, each box
 # 0.3-0.8 m along each side, turned at random and shifted by up to 5 cm (no two overlap at the start).
@@ -385,12 +393,17 @@ write_json("projectile_heavy.rlscene", scene([floor,
     {"name": "Box", "shape": {"box": [0.1, 0.1, 0.1]}, "position": [3, 0.1, 0], "mass": 1.0},
     {"name": "Ball", "shape": {"sphere": 0.5}, "position": [0, 0.5, 0], "velocity": [10, 0, 0], "mass": 1000.0}]))
 
-# The card house with card stock's friction, mu 0.7, on the floor too (no bounce).
-write_json("card_house.rlscene", {
-    "format": "rigidlab-scene", "version": 1,
-    "materials": {"Card": {"density": 700.0, "friction": 0.7, "restitution": 0.0}},
-    "bodies": [obj_body("card_house.obj", "Anchor", material="Card")] + [
-        obj_body("card_house.obj", "Card" if i == 0 else "Card.%03d" % i, material="Card") for i in range(40)]})
+# The card house with card stock's friction, mu 0.7, on the floor too (no bounce); the steeper houses with less:
+# mu 0.4 at 20 degrees and 0.5 at 24 (about 1.1 tan(tilt), what statics asks of the loaded frames and the flat
+# cards' ends on the apexes).
+for file, obj, mu in (("card_house.rlscene", "card_house.obj", 0.7),
+                      ("card_house_20deg_mu04.rlscene", "card_house_20deg.obj", 0.4),
+                      ("card_house_24deg_mu05.rlscene", "card_house_24deg.obj", 0.5)):
+    write_json(file, {
+        "format": "rigidlab-scene", "version": 1,
+        "materials": {"Card": {"density": 700.0, "friction": mu, "restitution": 0.0}},
+        "bodies": [obj_body(obj, "Anchor", material="Card")] + [
+            obj_body(obj, "Card" if i == 0 else "Card.%03d" % i, material="Card") for i in range(40)]})
 
 # Two identical 1 m boxes in the same place, no gravity: they part at no more than the solver's 3 m/s.
 write_json("coincident_boxes.rlscene", scene([

@@ -22,8 +22,9 @@ Scene pyramid(int base);                                // 2D pyramid of unit cu
 Scene massRatio(Real light = 1.0, Real heavy = 1000.0); // a heavy cube resting on a light one (0.5 m cubes)
 Scene slabOnTwoCubes();                                 // 20 x 1 x 20 m slab on two unit cubes
 Scene cardHouse(int levels = 5, Real friction = 0.7);   // 2 mm x 0.4 m cards: 5 levels = 40 cards
-// The same with the cards leaning tiltDegrees from the vertical and the A-frames' apexes `spacing` m apart (the flat
-// cards, 0.4 m long, overhang the apexes when spacing is shorter). One level is a single A-frame on the floor.
+// The same with the cards leaning tiltDegrees from the vertical and the A-frames' apexes `spacing` m apart (at 0.4 m,
+// a card's length, the flat cards lie end to end; closer, neighbouring flat cards lie in each other). One level is a
+// single A-frame on the floor.
 Scene cardHouse(int levels, Real friction, Real tiltDegrees, Real spacing);
 Scene jenga(int layers = 30);              // three 0.75 x 0.15 x 0.25 m blocks per layer, crossed
 Scene slope(Real degrees, Real friction);  // a block resting on an inclined anchor; body 1 is the block

@@ -347,7 +347,10 @@ const Real kWedgeCosHigh = std::cos(glm::radians(Real(3.0)));
 
 void turnWedgeNormal(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, const SatResult& sat,
                      Manifold& m) {
-    if (a.isFlat() || b.isFlat() || !std::isfinite(sat.rivalSeparation) || m.pointCount == 0)
+    // Most face contacts end at the first test: a box on a floor, whose faces lie along the box's face deep in the
+    // floor, leads by far more than any band (and a rival of -infinity, none, fails it too).
+    const Real lead = std::abs(sat.separation - sat.rivalSeparation);
+    if (!(lead < kWedgeBand) || m.pointCount == 0 || a.isFlat() || b.isFlat())
         return;
     const Vec3 winner = m.normal;
     const Real cosine = glm::dot(winner, sat.rivalNormal);
@@ -355,8 +358,7 @@ void turnWedgeNormal(const Shape& a, const Transform& xfA, const Shape& b, const
     if (!(gate > 0.0) || !(cosine >= 0.0))
         return;
     const Real band = std::min(kWedgeBand, kWedgeBandOfThinnest * std::min(a.minExtent(), b.minExtent()));
-    const Real lead = sat.separation - sat.rivalSeparation;
-    const Real w = gate * Real(0.5) * (Real(1) - std::min(std::abs(lead) / band, Real(1)));
+    const Real w = gate * Real(0.5) * (Real(1) - std::min(lead / band, Real(1)));
     if (!(w > 0.0))
         return;
     const Vec3 n = glm::normalize((Real(1) - w) * winner + w * sat.rivalNormal);

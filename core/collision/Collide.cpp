@@ -347,8 +347,9 @@ const Real kWedgeCosHigh = std::cos(glm::radians(Real(3.0)));
 
 void turnWedgeNormal(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, const SatResult& sat,
                      Manifold& m) {
-    // Most face contacts end at the first test: a box on a floor, whose faces lie along the box's face deep in the
-    // floor, leads by far more than any band (and a rival of -infinity, none, fails it too).
+    // Most face contacts end at the first test: for a box on a floor the rival is one of the box's faces, along which
+    // the floor reaches far past the box, so the floor's face leads by far more than any band (and a rival of
+    // -infinity, none, fails the test too).
     const Real lead = std::abs(sat.separation - sat.rivalSeparation);
     if (!(lead < kWedgeBand) || m.pointCount == 0 || a.isFlat() || b.isFlat())
         return;

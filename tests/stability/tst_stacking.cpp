@@ -343,8 +343,8 @@ private slots:
 
     // The house starts with no card inside another (its flat cards lie end to end: while they lay 2 mm deep in each
     // other, it fell at 48 substeps), and stands at the default substeps and at finer ones; at the default substeps
-    // also with the cards leaning further on less friction, each row a tenth above the least that held it on
-    // 2026-12-07 (20 degrees and mu 0.3, 24 degrees and mu 0.4 fell; tan(tilt) is 0.36 and 0.45).
+    // also with the cards leaning further on less friction, each row on 0.1 more than a friction on which it fell on
+    // 2026-12-07 (20 degrees on mu 0.3, 24 degrees on 0.4; tan(tilt) is 0.36 and 0.45).
     void cardHouse_data() {
         QTest::addColumn<int>("substeps");
         QTest::addColumn<double>("tilt");

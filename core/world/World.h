@@ -474,9 +474,12 @@ private:
     // rounds over the pairs of the bodies that moved; returns the pushes.
     uint64_t groundPushedBodies(Real slop);
     static constexpr int kSeparateRounds = 4;
-    // In those rounds a pair is pushed where deeper than its floor by this (m): a body pushed 3-4 mm into the floor
-    // by the pushes before, at the foot of a stack of falling cubes in ramps.obj, lifted the stack above it.
+    // In those rounds a pair of two moving bodies is pushed where deeper than its floor by this (m): a body pushed
+    // 3-4 mm into the floor by the pushes before, at the foot of a stack of falling cubes in ramps.obj, lifted the
+    // stack above it. A pair with a body that does not move (the floor, a sleeper) is pushed as soon as it is deeper
+    // than its floor (roundsBeyond()).
     static constexpr Real kRoundsBeyond = 0.003;
+    Real roundsBeyond(uint32_t slot) const;
     void refreshTransforms();
     void wakeIsland(uint32_t body);
     void restartSleepClock(uint32_t body);

@@ -334,7 +334,9 @@ private slots:
     }
 
     // 1,000 random boxes (0.3-0.8 m a side, turned at random, a 10 x 10 x 10 grid 1.6 m apart) dropped on a floor box:
-    // none below the floor, and the largest speed in the last second < 1 cm/s.
+    // none below the floor, and the largest speed in the last second < 1 cm/s. "Below" allows the contacts' 2 mm slop
+    // and rounding: the lowest corner was 4.99 mm under until 2026-12-07, when boxes that landing ones had pushed into
+    // the floor stayed there up to 5 mm (World::roundsBeyond()), and 2.00 mm since.
     void randomBoxes() {
         BAKE_OR_FAIL(b, dataPath("boxes1000.obj"));
         QCOMPARE(b.csv.bodies, 1001);
@@ -344,7 +346,7 @@ private slots:
         const double speed = b.csv.maxSpeedLastSecond();
         qInfo("boxes1000: lowest vertex y %.3f mm ('%s', frame %d), max speed in the last second %.4f cm/s", 1e3 * low,
               qPrintable(body), frame, 1e2 * speed);
-        QVERIFY(low > -0.01);
+        QVERIFY(low > -0.0025);
         QVERIFY(speed < 0.01);
     }
 

@@ -67,8 +67,10 @@ private slots:
     // Issue 4's "none below the floor", by the lowest point of any box, in piles laid out as boxes1000.obj. The
     // pushes after the sweeps (World::separateMovedPairs()) drove boxes on the floor into it again step after step
     // while the rounds that take them out kept each one's depth at the step's start as its floor: piles of this
-    // layout went up to 14.6 mm into it (2026-12-06; 12 of 48 beyond 1 cm, at most 8.5 mm after). Now at most the
-    // pushes' slop and the rounds' allowance, 5 mm. Before, these rows: -11.8, -7.0, -10.4 and -9.5 mm.
+    // layout went up to 14.6 mm into it (2026-12-06; 12 of 48 beyond 1 cm, at most 8.5 mm after). Then at most the
+    // pushes' slop and the rounds' allowance, 5 mm; since 2026-12-07 the rounds push a box out of the floor from the
+    // slop (World::roundsBeyond()). These rows: -11.8, -7.0, -10.4 and -9.5 mm before 2026-12-06, -4.94, -4.93, -4.92
+    // and -4.99 mm before 2026-12-07, -3.53, -2.60, -2.00 and -2.21 mm now.
     void gridPilesStayOutOfTheFloor_data() {
         QTest::addColumn<unsigned>("seed");
         QTest::addColumn<double>("spacing");
@@ -97,7 +99,7 @@ private slots:
         qInfo("box grid: lowest point %.2f mm (frame %d), max speed in the last second %.3g m/s", 1e3 * lowest, frame,
               stats.maxSpeedLastSecond);
         QVERIFY(stats.allFinite);
-        QVERIFY(lowest > -0.007);
+        QVERIFY(lowest > -0.004);
         QVERIFY(stats.maxSpeedLastSecond < 0.01);
     }
 };

@@ -345,13 +345,14 @@ constexpr Real kWedgeBandOfThinnest = 0.1;
 const Real kWedgeCosLow = std::cos(glm::radians(Real(1.0)));
 const Real kWedgeCosHigh = std::cos(glm::radians(Real(3.0)));
 
+// m holds at least one point (clipFaces() returned true).
 void turnWedgeNormal(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB, const SatResult& sat,
                      Manifold& m) {
     // Most face contacts end at the first test: for a box on a floor the rival is one of the box's faces, along which
     // the floor reaches far past the box, so the floor's face leads by far more than any band (and a rival of
     // -infinity, none, fails the test too).
     const Real lead = std::abs(sat.separation - sat.rivalSeparation);
-    if (!(lead < kWedgeBand) || m.pointCount == 0 || a.isFlat() || b.isFlat())
+    if (!(lead < kWedgeBand) || a.isFlat() || b.isFlat())
         return;
     const Vec3 winner = m.normal;
     const Real cosine = glm::dot(winner, sat.rivalNormal);

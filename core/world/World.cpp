@@ -510,6 +510,10 @@ CollideOptions World::pairCollideOptions() const {
     return options;
 }
 
+bool World::withStillBody(uint32_t slot) const {
+    return !m_state.isMoving(m_contactPairs[slot].bodyA) || !m_state.isMoving(m_contactPairs[slot].bodyB);
+}
+
 Real World::roundsBeyond(uint32_t slot) const {
     // With kRoundsBeyond for every pair, a box on the floor that separateMovedPairs() pushed down, parting it from one
     // that landed on it turning, stayed up to slop + kRoundsBeyond (5 mm) in the floor: in piles of 1,000 boxes
@@ -517,8 +521,7 @@ Real World::roundsBeyond(uint32_t slot) const {
     // -9.13 mm at worst, in Blender's boxes1000.obj -4.99 mm and in ramps.obj -4.65 mm. Pushed from the floor's slop,
     // -2.46 mm on average and -6.24 at worst, -2.00 and -2.00 mm (2026-12-07); the deepest contact between two boxes of
     // a pile 0.8 mm less in grid16, 1.9 and 2.0 mm more in grid16h and grid12 (averages of 75 piles: 21.8, 34.5, 20.8).
-    const bool still = !m_state.isMoving(m_contactPairs[slot].bodyA) || !m_state.isMoving(m_contactPairs[slot].bodyB);
-    return still ? 0.0 : kRoundsBeyond;
+    return withStillBody(slot) ? 0.0 : kRoundsBeyond;
 }
 
 Real World::separationFloor(uint32_t slot, Real slop, bool fromStart) const {
@@ -533,7 +536,7 @@ Real World::separationFloor(uint32_t slot, Real slop, bool fromStart) const {
     // it down. Measured 2026-12-06 over 48 piles (10 x 10 x 10 grids 1.2 and 1.6 m apart, from 1 m and 10 m up, boxes
     // of 0.3-0.8 m): lowest vertex below the floor at most 8.5 mm, one pile beyond 6 mm, against 14.6 mm and 12 piles
     // beyond 10 mm; the deepest contact anywhere 33.7 mm on average against 33.0.
-    const bool still = !m_state.isMoving(m_contactPairs[slot].bodyA) || !m_state.isMoving(m_contactPairs[slot].bodyB);
+    const bool still = withStillBody(slot);
     return (fromStart && !still) || start < -m_tuning.separateDeepStart ? start - slop : -slop;
 }
 

@@ -480,6 +480,8 @@ private:
     // than its floor (roundsBeyond()).
     static constexpr Real kRoundsBeyond = 0.003;
     Real roundsBeyond(uint32_t slot) const;
+    // Whether one body of the pair does not move (an anchor, a sleeper).
+    bool withStillBody(uint32_t slot) const;
     void refreshTransforms();
     void wakeIsland(uint32_t body);
     void restartSleepClock(uint32_t body);

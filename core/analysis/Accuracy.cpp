@@ -21,8 +21,11 @@ constexpr std::array<Integrator, 4> kIntegrators = {Integrator::ExplicitEuler, I
                                                     Integrator::Verlet, Integrator::Rk4};
 constexpr Real kG = 9.81;
 constexpr Real kFps = 60.0;                                    // the world problems run at the default frame rate
-constexpr std::array<int, 6> kSubsteps = {1, 2, 4, 8, 16, 32}; // and vary the substeps, 4 being the default
-constexpr std::array<int, 8> kOscillatorSteps = {10, 20, 40, 80, 160, 320, 640, 1280}; // 10, 20, 40: the original's
+constexpr std::array<int, 6> kSubsteps = {1, 2, 4, 8, 16, 32}; // and vary the substeps (the world's default is 6)
+// 10, 20 and 40: the original project's experiment. Explicit Euler reaches its first order only at small steps (its
+// amplitude grows as (1 + h^2)^(n/2)): a least-squares slope over every row from 10 to 1,280 steps is 1.12, to 5,120
+// 1.09, so the finer rows are there for whoever fits all of them. RK4's last two are below the fit's rounding floor.
+constexpr std::array<int, 10> kOscillatorSteps = {10, 20, 40, 80, 160, 320, 640, 1280, 2560, 5120};
 constexpr int kMaxTimingRepetitions = 1000000; // bounds the timing loop whatever the clock does
 
 const Real kNaN = std::numeric_limits<Real>::quiet_NaN();

@@ -196,6 +196,26 @@ Result<BodyInit> bodyInitFromHull(const ConvexHull& hull, Real density, const Ve
     return init;
 }
 
+bool BodyState::solverInertiaDrifted(uint32_t i, const Quat& stepStart) const {
+    // The turn since the step start in the principal frame, q0* q, and twice its vector part t (2 sin(angle / 2)
+    // times the axis). [T, D] (T = t x) has the entries t_k (d_i - d_j) for each pair i, j of axes and k the third:
+    // |[T, D]|^2 = 2 sum t_k^2 (d_i - d_j)^2, which bounds |R D R^T - D|^2 (BodyState.h).
+    const Quat turn = glm::conjugate(stepStart) * orientation[i];
+    const Vec3 t = 2.0 * Vec3(turn.x, turn.y, turn.z);
+    const Vec3 d = invInertia[i];
+    const Real yz = d.y - d.z, xz = d.x - d.z, xy = d.x - d.y;
+    const Real drift2 = 2.0 * (t.x * t.x * yz * yz + t.y * t.y * xz * xz + t.z * t.z * xy * xy);
+    const Real least = std::min({d.x, d.y, d.z});
+    return drift2 > kSolverInertiaDrift * kSolverInertiaDrift * least * least;
+}
+
+Mat3 BodyState::solverInverseInertia(uint32_t i, const Quat& stepStart) const {
+    if (!solverInertiaDrifted(i, stepStart))
+        return worldInverseInertia(i);
+    const Vec3 d = invInertia[i];
+    return Mat3(std::min({d.x, d.y, d.z}));
+}
+
 bool BodyState::hasIsotropicInverseInertia(uint32_t i) const {
     const Vec3 d = invInertia[i];
     return std::abs(d.y - d.x) <= 1e-12 * d.x && std::abs(d.z - d.x) <= 1e-12 * d.x;

@@ -274,13 +274,14 @@ void setUpConstraint(ContactConstraint& c, const Manifold& m, uint32_t indexA, u
     }
 }
 
-// The kinetic energy of body b moving at v and turning at w (its inverse inertia is in world axes).
-Real kineticEnergy(const SolverBody& b, const Vec3& v, const Vec3& w) {
-    if (!(b.invMass > 0.0))
+// The kinetic energy of a body of inverse mass invMass and inverse inertia invInertia (world axes) moving at v and
+// turning at w.
+Real kineticEnergy(Real invMass, const Mat3& invInertia, const Vec3& v, const Vec3& w) {
+    if (!(invMass > 0.0))
         return 0.0;
-    Real e = 0.5 * glm::dot(v, v) / b.invMass;
-    if (w != Vec3(0.0) && glm::determinant(b.invInertia) > 0.0)
-        e += 0.5 * glm::dot(w, glm::inverse(b.invInertia) * w);
+    Real e = 0.5 * glm::dot(v, v) / invMass;
+    if (w != Vec3(0.0) && glm::determinant(invInertia) > 0.0)
+        e += 0.5 * glm::dot(w, glm::inverse(invInertia) * w);
     return e;
 }
 
@@ -529,8 +530,11 @@ void ContactSolver::prepare(std::span<Manifold* const> manifolds, std::span<cons
     findBlows(inputs, parallelFor);
     if (m_bounceOnly || (m_kept && settings.restitution)) {
         m_startVelocity.resize(bodies.size());
-        for (size_t i = 0; i < bodies.size(); ++i)
+        m_startInverseInertia.resize(bodies.size());
+        for (size_t i = 0; i < bodies.size(); ++i) {
             m_startVelocity[i] = {bodies[i].v, bodies[i].w};
+            m_startInverseInertia[i] = bodies[i].invInertia;
+        }
     }
     m_sweepRows = {};
     for (size_t i = 0; i < m_count; ++i)
@@ -1646,9 +1650,14 @@ constexpr int kChainPasses = 64;
 
 } // namespace
 
-void ContactSolver::applyRestitution(std::span<SolverBody> bodies) {
+void ContactSolver::applyRestitution(std::span<SolverBody> bodies, std::span<const Mat3> poseInverseInertia) {
     if (!m_settings.restitution)
         return;
+    m_poseInverseInertia = poseInverseInertia.size() == bodies.size() ? poseInverseInertia : std::span<const Mat3>();
+    struct Forget { // the span is the caller's: not kept past this call
+        std::span<const Mat3>& pose;
+        ~Forget() { pose = {}; }
+    } forget{m_poseInverseInertia};
     syncFromBatches();
     // The constraints with records (restitution, and two moving bodies or a fast approach: mayBounce()) and the
     // struck ones among them. A constraint that holds a side (ContactConstraint::scaleA, scaleB) makes a light body
@@ -1753,8 +1762,10 @@ void ContactSolver::launch(std::span<SolverBody> bodies, std::span<const Launch>
             const SolverBody& b = bodies[ids[k]];
             before[k] = {b.v, b.w};
             const auto [v0, w0] = m_startVelocity[ids[k]];
+            const Mat3& start = m_startInverseInertia[ids[k]];
             const Vec3 g = b.invMass > 0.0 ? m_settings.gravity : Vec3(0.0);
-            bound += std::max(kineticEnergy(b, v0, w0), kineticEnergy(b, v0 + g * flight, w0));
+            bound +=
+                std::max(kineticEnergy(b.invMass, start, v0, w0), kineticEnergy(b.invMass, start, v0 + g * flight, w0));
         }
     }
     impulseBefore.resize(launches.size());
@@ -1776,10 +1787,12 @@ void ContactSolver::launch(std::span<SolverBody> bodies, std::span<const Launch>
     Real e0 = 0.0, e1 = 0.0, e2 = 0.0;
     for (size_t k = 0; k < ids.size(); ++k) {
         const SolverBody& b = bodies[ids[k]];
+        const Mat3& inertia = m_poseInverseInertia.empty() ? b.invInertia : m_poseInverseInertia[ids[k]];
+        const auto energy = [&](const Vec3& v, const Vec3& w) { return kineticEnergy(b.invMass, inertia, v, w); };
         const auto [v, w] = before[k];
-        e0 += kineticEnergy(b, v, w);
-        e2 += kineticEnergy(b, b.v - v, b.w - w);
-        e1 += kineticEnergy(b, b.v, b.w) - kineticEnergy(b, v, w) - kineticEnergy(b, b.v - v, b.w - w);
+        e0 += energy(v, w);
+        e2 += energy(b.v - v, b.w - w);
+        e1 += energy(b.v, b.w) - energy(v, w) - energy(b.v - v, b.w - w);
     }
     if (e0 + e1 + e2 <= bound) {
         if (!warmStartsNext)

@@ -105,9 +105,11 @@ void symplecticVelocitiesForSolver(BodyState& state, std::span<const uint32_t> b
 // their pose), then solver[k + 1].dp and .dR get the motion since startPosition[k] and startOrientation[k] (.dR as
 // BodyState::anchorTurn() gives it), and with rotation .invInertia the inverse inertia at the new pose (where
 // SolverBody::isotropic is set, the body's first inverse moment times the identity, as
-// BodyState::worldInverseInertia() gives a body with isotropic inertia). The numbers of those steps one after the
-// other, to the bit; eight or four bodies at a time where the CPU has the vector units. lanes: 0 for the widest the
-// CPU has, 4 to keep to four, 1 for one body at a time (the reference the tests compare with).
+// BodyState::worldInverseInertia() gives a body with isotropic inertia), or where that drifted too far from the step
+// start's, the least inverse moment times the identity (BodyState::solverInverseInertia(), kSolverInertiaDrift). The
+// numbers of those steps one after the other, to the bit; eight or four bodies at a time where the CPU has the vector
+// units. lanes: 0 for the widest the CPU has, 4 to keep to four, 1 for one body at a time (the reference the tests
+// compare with).
 void symplecticPositionsForSolver(BodyState& state, std::span<const uint32_t> bodies, Real dt, bool rotationEnabled,
                                   std::span<const Vec3> startPosition, std::span<const Quat> startOrientation,
                                   std::span<SolverBody> solver, int lanes = 0);

@@ -316,6 +316,29 @@ for i in range(1000):
          rotation=(rng.uniform(0, 2 * math.pi), rng.uniform(0, 2 * math.pi), rng.uniform(0, 2 * math.pi)))
 export_obj("boxes1000.obj")
 
+# 24 rods dropped tilted onto a floor box, 1.5 m apart (2026-12-07: thin turning bodies gained energy, see
+# tst_motion's turningRodsGainNoEnergy): broomsticks (16-sided, 1.2 m x 3 cm), laths (1 m x 4 x 1.5 cm), pencils
+# (hexagonal, 18 cm x 7 mm) and knitting needles (8-sided, 35 cm x 4 mm), their lowest point 0.3-2 m up, turned at
+# random, of Wood, Steel, Rubber and Plastic.
+reset()
+floor_box(mat="Concrete")
+rng = __import__("random").Random(11)
+rod_mats = ["Wood", "Steel", "Rubber", "Plastic"]
+for i in range(24):
+    kind = i % 4
+    location = ((i % 6 - 2.5) * 1.5, (i // 6 - 1.5) * 1.5, 0)
+    rotation = (rng.uniform(0, 2 * math.pi), rng.uniform(0, 2 * math.pi), rng.uniform(0, 2 * math.pi))
+    if kind == 1:
+        cube("Lath", location=location, scale=(1.0, 0.04, 0.015), rotation=rotation, mat=rod_mats[i // 4 % 4])
+    else:
+        vertices, radius, depth, name = [(16, 0.015, 1.2, "Broomstick"), None, (6, 0.0035, 0.18, "Pencil"),
+                                         (8, 0.002, 0.35, "Needle")][kind]
+        bpy.ops.mesh.primitive_cylinder_add(vertices=vertices, radius=radius, depth=depth, location=location,
+                                            rotation=rotation)
+        named(name, mat=rod_mats[i // 4 % 4])
+    drop_on_floor(bpy.context.active_object, gap=rng.uniform(0.3, 2.0))
+export_obj("rods.obj")
+
 # JSON scenes over the exported OBJ files.
 write_json("slope30_mu07.rlscene", scene([
     obj_body("slope30.obj", "Anchor", friction=0.7, restitution=0.0),

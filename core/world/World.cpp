@@ -495,8 +495,9 @@ void World::pushOutOfContacts(Real slop) {
 void World::nudge(uint32_t body, Real push, const Vec3& direction, Real inverseMass, const Mat3& inverseInertia,
                   const Vec3& arm) {
     m_state.position[body] += inverseMass * push * direction;
-    // (First order: a push turns a body by little. The exponential map, rotationFromVector(), changes the frames, and
-    // with it two of the 144 piles of tst_piles' kind, seeds 7 and 36, were still moving at 10 s, 2026-12-05.)
+    // (First order: a push turns most bodies by little, though a thin one it may turn far, keepSpinEnergy(). The
+    // exponential map, rotationFromVector(), changes the frames, and with it two of the 144 piles of tst_piles' kind,
+    // seeds 7 and 36, were still moving at 10 s, 2026-12-05.)
     const Vec3 theta = push * (inverseInertia * arm);
     Quat& q = m_state.orientation[body];
     const Quat before = q;

@@ -1368,10 +1368,10 @@ private slots:
         QCOMPARE(met, kStarts);
     }
 
-    // Thin anchored walls (0.1 mm and 1 mm boxes, and a flat quad: a Blender plane) against small fast shots: a 1 cm
-    // ball, a 2 cm cube and a 10 x 1 x 1 cm rod, at 300 and 3,000 m/s, head on or 60 and 80 degrees off the normal,
-    // still or spinning at 244 rad/s. The shot's centre must never be beyond the wall's face inside the wall's extent
-    // (no gravity: a shot that slides along the wall leaves it past its edge). Without CCD
+    // Thin anchored walls (0.1 mm and 1 mm boxes, and a flat quad: a Blender plane) against small fast shots: a ball of
+    // 1 cm radius, a 2 cm cube and a 10 x 1 x 1 cm rod, at 300 and 3,000 m/s, head on or 60 and 80 degrees off the
+    // normal, still or spinning at 244 rad/s. The shot's centre must never be beyond the wall's face inside the wall's
+    // extent (no gravity: a shot that slides along the wall leaves it past its edge). Without CCD
     // (`--effects auto,-ccd`) 240 of a sweep of 384 such cases passed through (2026-12-07).
     void shotsNeverPassThinWalls_data() {
         QTest::addColumn<int>("wall"); // 0: 0.1 mm box, 1: 1 mm box, 2: flat quad

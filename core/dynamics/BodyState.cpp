@@ -209,11 +209,13 @@ bool BodyState::solverInertiaDrifted(uint32_t i, const Quat& stepStart) const {
     return drift2 > kSolverInertiaDrift * kSolverInertiaDrift * least * least;
 }
 
-Mat3 BodyState::solverInverseInertia(uint32_t i, const Quat& stepStart) const {
-    if (!solverInertiaDrifted(i, stepStart))
-        return worldInverseInertia(i);
+Mat3 BodyState::leastInverseInertia(uint32_t i) const {
     const Vec3 d = invInertia[i];
     return Mat3(std::min({d.x, d.y, d.z}));
+}
+
+Mat3 BodyState::solverInverseInertia(uint32_t i, const Quat& stepStart) const {
+    return solverInertiaDrifted(i, stepStart) ? leastInverseInertia(i) : worldInverseInertia(i);
 }
 
 bool BodyState::hasIsotropicInverseInertia(uint32_t i) const {

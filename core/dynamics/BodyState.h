@@ -169,6 +169,8 @@ struct BodyState {
     // times the axis) and D the principal inverse moments: at least |R D R^T - D| for any turn R (a check over 200,000
     // random turns and moments found the ratio at most 1, 2026-12-07).
     bool solverInertiaDrifted(uint32_t i, const Quat& stepStart) const;
+    // The least inverse moment times the identity: what solverInverseInertia() takes where the inertia drifted.
+    Mat3 leastInverseInertia(uint32_t i) const;
     Mat3 worldInertia(uint32_t i) const;
     Real kineticEnergy(uint32_t i) const;                           // translational + rotational, J
     Real rotationalEnergy(uint32_t i) const;                        // J

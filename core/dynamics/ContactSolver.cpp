@@ -1650,13 +1650,13 @@ constexpr int kChainPasses = 64;
 
 } // namespace
 
-void ContactSolver::applyRestitution(std::span<SolverBody> bodies, std::span<const Mat3> poseInverseInertia) {
+void ContactSolver::applyRestitution(std::span<SolverBody> bodies, const PoseInverseInertia& poseInverseInertia) {
     if (!m_settings.restitution)
         return;
-    m_poseInverseInertia = poseInverseInertia.size() == bodies.size() ? poseInverseInertia : std::span<const Mat3>();
-    struct Forget { // the span is the caller's: not kept past this call
-        std::span<const Mat3>& pose;
-        ~Forget() { pose = {}; }
+    m_poseInverseInertia = poseInverseInertia ? &poseInverseInertia : nullptr;
+    struct Forget { // the function is the caller's: not kept past this call
+        const PoseInverseInertia*& pose;
+        ~Forget() { pose = nullptr; }
     } forget{m_poseInverseInertia};
     syncFromBatches();
     // The constraints with records (restitution, and two moving bodies or a fast approach: mayBounce()) and the
@@ -1787,7 +1787,7 @@ void ContactSolver::launch(std::span<SolverBody> bodies, std::span<const Launch>
     Real e0 = 0.0, e1 = 0.0, e2 = 0.0;
     for (size_t k = 0; k < ids.size(); ++k) {
         const SolverBody& b = bodies[ids[k]];
-        const Mat3& inertia = m_poseInverseInertia.empty() ? b.invInertia : m_poseInverseInertia[ids[k]];
+        const Mat3 inertia = m_poseInverseInertia ? (*m_poseInverseInertia)(ids[k]) : b.invInertia;
         const auto energy = [&](const Vec3& v, const Vec3& w) { return kineticEnergy(b.invMass, inertia, v, w); };
         const auto [v, w] = before[k];
         e0 += energy(v, w);

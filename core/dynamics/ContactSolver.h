@@ -344,11 +344,13 @@ public:
     // A manifold that holds a side (ContactConstraint::scaleA, scaleB) bounces alone and with the bodies' own masses,
     // and no bounce leaves its bodies more kinetic energy than free flight through the step would have (launch()).
     // That bound takes each body's energy at the step start with its inverse inertia then (kept by prepare()), and
-    // its energy now with `poseInverseInertia[i]` for body i where given: its inverse inertia at its current pose,
-    // where the sweeps may have taken another (BodyState::solverInverseInertia()). Measured in the sweeps' metric
+    // its energy now with `poseInverseInertia(i)` for solver body i where given: its inverse inertia at its current
+    // pose, where the sweeps may have taken another (BodyState::solverInverseInertia()). It is asked only for the
+    // bodies of a bounce, so a step in which nothing bounces pays nothing for it. Measured in the sweeps' metric
     // instead, a rod turned 2.5 rad in the step counted its spin about its length at 200 times its energy, and its
     // bounces threw it up (2026-12-07).
-    void applyRestitution(std::span<SolverBody> bodies, std::span<const Mat3> poseInverseInertia = {});
+    using PoseInverseInertia = std::function<Mat3(uint32_t body)>;
+    void applyRestitution(std::span<SolverBody> bodies, const PoseInverseInertia& poseInverseInertia = {});
     // Writes the accumulated impulses back to the manifolds (those given to prepare()) for warm starting in the next
     // step. parallelFor, if given, shares the manifolds out (each is written alone, so the results are the same).
     void storeImpulses(std::span<Manifold* const> manifolds, const ParallelFor& parallelFor = {}) const;
@@ -586,11 +588,11 @@ private:
     // With restitution on: each solver body's linear and angular velocity at prepare() (the step start), from which
     // bounceChains() works out a chain's collisions.
     std::vector<std::pair<Vec3, Vec3>> m_startVelocity;
-    std::vector<Mat3> m_startInverseInertia;    // beside m_startVelocity: each body's inverse inertia at the step start
-    std::span<const Mat3> m_poseInverseInertia; // during applyRestitution(): its poseInverseInertia
-    std::vector<std::array<uint8_t, 4>> m_order; // per constraint: its ContactConstraint::order
-    std::vector<uint8_t> m_batchKey;             // per constraint: its group within its level (buildBatches())
-    std::vector<uint8_t> m_struck; // per constraint while blowPasses or blowShockPasses: ContactConstraint::blow
+    std::vector<Mat3> m_startInverseInertia; // beside m_startVelocity: each body's inverse inertia at the step start
+    const PoseInverseInertia* m_poseInverseInertia = nullptr; // during applyRestitution(): its poseInverseInertia
+    std::vector<std::array<uint8_t, 4>> m_order;              // per constraint: its ContactConstraint::order
+    std::vector<uint8_t> m_batchKey; // per constraint: its group within its level (buildBatches())
+    std::vector<uint8_t> m_struck;   // per constraint while blowPasses or blowShockPasses: ContactConstraint::blow
     // absorbBlows()' records: in manifold order (m_blowIndex: each one's constraint), and again from the ground up,
     // each lower body held (m_shocks).
     std::vector<ContactConstraint> m_blows, m_shocks;

@@ -205,7 +205,7 @@ RL_LANES_INLINE void positionsForSolverLanes(BodyState& state, const uint32_t* i
         s.dR = state.isRound(k) ? state.anchorTurn(k, startOrientation[k])
                                 : Mat3(m00[l], m01[l], m02[l], m10[l], m11[l], m12[l], m20[l], m21[l], m22[l]);
         if (full[l] && state.solverInertiaDrifted(k, startOrientation[k]))
-            s.invInertia = state.solverInverseInertia(k, startOrientation[k]); // (see kSolverInertiaDrift)
+            s.invInertia = state.leastInverseInertia(k); // (see kSolverInertiaDrift)
         else if (full[l])
             s.invInertia = Mat3(i00[l], i01[l], i02[l], i01[l], i11[l], i12[l], i02[l], i12[l], i22[l]);
         else if (rotationEnabled) // (what worldInverseInertia() gives an isotropic body, without the call)

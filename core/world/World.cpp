@@ -2815,12 +2815,10 @@ void World::solveSubsteps(SolveScratch& scratch, int substeps, bool mayUseTeam, 
             t.emplace(m_profile, Stage::Restitution);
         toSolver(allLocal);
         // The energies of its bound at the step end's poses, which the sweeps' inverse inertias may not be (see
-        // kSolverInertiaDrift).
-        scratch.poseInverseInertia.resize(bodies.size());
-        scratch.poseInverseInertia[0] = Mat3(0.0);
-        for (const uint32_t k : allLocal)
-            scratch.poseInverseInertia[k + 1] = rotation ? local.worldInverseInertia(k) : Mat3(0.0);
-        solver.applyRestitution(bodies, scratch.poseInverseInertia);
+        // kSolverInertiaDrift). Solver body k + 1 is local body k; entry 0 does not move.
+        solver.applyRestitution(bodies, [&](uint32_t body) {
+            return rotation && body > 0 ? local.worldInverseInertia(body - 1) : Mat3(0.0);
+        });
         fromSolver(allLocal);
     }
     std::optional<StageTimer> storeTimer;

@@ -327,12 +327,11 @@ private:
         std::vector<uint32_t> renumber, reordered; // numberByParts()
         std::vector<Vec3> startPosition;           // local bodies at the step start
         std::vector<Quat> startOrientation;
-        std::vector<Mat3> poseInverseInertia; // per solver body, for the restitution pass: at the step's end pose
-        std::vector<uint8_t> part;            // per solver body: its part (cutIslands())
-        size_t islandsCut = 0;                // islands of the group cut in parts
-        size_t partImbalance = 0;             // with islands cut: the bodies of the larger part less those of the other
-        std::vector<uint32_t> islandSize;     // per island root (cutIslands(), entries of the group's roots only)
-        std::vector<uint8_t> islandPart;      // likewise
+        std::vector<uint8_t> part;        // per solver body: its part (cutIslands())
+        size_t islandsCut = 0;            // islands of the group cut in parts
+        size_t partImbalance = 0;         // with islands cut: the bodies of the larger part less those of the other
+        std::vector<uint32_t> islandSize; // per island root (cutIslands(), entries of the group's roots only)
+        std::vector<uint8_t> islandPart;  // likewise
         std::vector<std::pair<uint32_t, uint32_t>> wholeIslands; // (bodies, root) of the islands not cut
         std::vector<std::pair<uint32_t, uint32_t>> cutBodies;    // (island root, position in bodies)
         struct CutIsland {

@@ -1757,15 +1757,13 @@ void ContactSolver::launch(std::span<SolverBody> bodies, std::span<const Launch>
         std::sort(ids.begin(), ids.end());
         ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
         before.resize(ids.size());
-        const Real flight = m_settings.step + m_h;
         for (size_t k = 0; k < ids.size(); ++k) {
             const SolverBody& b = bodies[ids[k]];
             before[k] = {b.v, b.w};
             const auto [v0, w0] = m_startVelocity[ids[k]];
             const Mat3& start = m_startInverseInertia[ids[k]];
-            const Vec3 g = b.invMass > 0.0 ? m_settings.gravity : Vec3(0.0);
-            bound +=
-                std::max(kineticEnergy(b.invMass, start, v0, w0), kineticEnergy(b.invMass, start, v0 + g * flight, w0));
+            const Real work = b.invMass > 0.0 ? glm::dot(m_settings.gravity, b.dp) / b.invMass : 0.0;
+            bound += kineticEnergy(b.invMass, start, v0, w0) + work;
         }
     }
     impulseBefore.resize(launches.size());

@@ -98,8 +98,8 @@ struct ContactSolverSettings {
     // Gravity (m/s^2) of the moving bodies. The restitution pass uses it to turn the solver's velocities into the
     // speeds at the instant of impact (see applyRestitution()).
     Vec3 gravity{0.0};
-    // The whole step (s), of which the substeps are parts: the restitution pass bounds a bounce's energy by what the
-    // bodies would have in free flight to its end (see applyRestitution()). 0: no bound.
+    // The whole step (s), of which the substeps are parts. Not 0: the restitution pass bounds a bounce's energy by
+    // the bodies' energy at the step start (see applyRestitution()). 0: no bound.
     Real step = 0.0;
     // Where a body's stored velocity v sits on its free flight under constant acceleration a: the integrator moves
     // it as the exact parabola through its positions whose velocity is v + flightOffset a h (h the substep). That is
@@ -138,7 +138,7 @@ struct ContactSolverCounters {
     uint64_t normalRows = 0;   // normal constraint rows solved (points x iterations)
     uint64_t frictionRows = 0; // friction rows solved: two tangents and the twist per manifold and sweep
     uint64_t restitutionRows = 0;
-    uint64_t boundedBounces = 0; // launches of the restitution pass taken back to the energy of free flight
+    uint64_t boundedBounces = 0; // launches of the restitution pass taken back to the energy of the step start
     uint64_t sweptBatches = 0;   // batches swept by the solve and relax sweeps (each of up to 8 or 4 constraints)
     uint64_t blowRows = 0;       // normal rows solved by absorbBlows() (not in normalRows)
     ContactSolverCounters& operator+=(const ContactSolverCounters& o) {
@@ -342,9 +342,13 @@ public:
     // step start (bounceChains()), and each of their points leaves at the speed that gives.
     //
     // A manifold that holds a side (ContactConstraint::scaleA, scaleB) bounces alone and with the bodies' own masses,
-    // and no bounce leaves its bodies more kinetic energy than free flight through the step would have (launch()).
-    // That bound takes each body's energy at the step start with its inverse inertia then (kept by prepare()), and
-    // its energy now with `poseInverseInertia(i)` for solver body i where given: its inverse inertia at its current
+    // and no bounce leaves its bodies more energy than they had at the step start: kinetic energy no more than that
+    // at the start plus gravity's work over each body's motion through the step (launch()). (Until 2026-12-07 the
+    // bound was the kinetic energy of free flight through the step and a substep, more than a body that landed within
+    // the step ever has: boxes, cones and planks landing frictionless with e 0.95-1 while they spun gained up to 2.1 %
+    // of their energy.)
+    // That bound takes each body's kinetic energy at the step start with its inverse inertia then (kept by prepare()),
+    // and its energy now with `poseInverseInertia(i)` for solver body i where given: its inverse inertia at its current
     // pose, where the sweeps may have taken another (BodyState::solverInverseInertia()). It is asked only for the
     // bodies of a bounce, so a step in which nothing bounces pays nothing for it. Measured in the sweeps' metric
     // instead, a rod turned 2.5 rad in the step counted its spin about its length at 200 times its energy, and its
@@ -512,9 +516,9 @@ private:
     Launch launchOf(std::span<const SolverBody> bodies, uint32_t constraint, uint8_t points, const Real atSurface[4],
                     bool sweepsFloor) const;
     // Sweeps the launches together until their impulses settle (at most `passes` sweeps), then takes them back in
-    // proportion as far as needed to leave their bodies no more kinetic energy than free flight from the step start
-    // to its end (and a substep) would have given them. Unless warmStartsNext, the points' accumulated impulses are
-    // left as the sweeps left them, for the next step's warm start.
+    // proportion as far as needed to leave their bodies no more kinetic energy than they had at the step start and
+    // gravity gave them over their motion through the step (SolverBody::dp). Unless warmStartsNext, the points'
+    // accumulated impulses are left as the sweeps left them, for the next step's warm start.
     void launch(std::span<SolverBody> bodies, std::span<const Launch> launches, int passes, bool warmStartsNext);
     void sweepLaunches(std::span<SolverBody> bodies, std::span<const Launch> launches, int passes);
     // A record's impulses into its manifold.

@@ -424,6 +424,9 @@ private:
     HoldGeometry holdGeometry(uint32_t slot) const;
     // Whether the lower body's surface moves into the upper one faster than WorldTuning::holdRiseSpeed at a point.
     bool risingInto(uint32_t slot, const HoldGeometry& g) const;
+    // Whether a third body (with a height) rests on `upper` and bears `lower` up: a loop of bodies each resting on
+    // the next, as crossed sticks in a pile make (see contactHold()).
+    bool holdsInALoop(uint32_t upper, uint32_t lower) const;
     // An inelastic impulse at the contact's fastest closing point, repeated while the lower body rises into the
     // upper one (heightsAboveSupport()).
     void meetRisingLowerBody(uint32_t slot);
@@ -618,6 +621,10 @@ private:
     bool m_listGaps = false, m_gapsListed = false;
     std::vector<Real> m_nearestGap; // per body: the least separation of its touching contacts
     std::vector<uint8_t> m_mayRise; // per body with a height: whether its surface may move faster than holdRiseSpeed
+    // Per body with a height: the bodies with a height it touches (each index << 2, bit 0 set when the neighbour
+    // rests on the body, bit 1 when the body rests on it), sorted, from m_neighbours[m_neighbourStart[i]] on.
+    std::vector<uint32_t> m_neighbourStart, m_neighbourFill;
+    std::vector<uint64_t> m_neighbours;
     bool m_anyHeight = false;
     // This step: no two moving bodies far enough apart in mass for any island to take finer substeps (solve()); then
     // m_refinement is not filled and every moving body is in the one group.

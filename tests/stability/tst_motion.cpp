@@ -119,6 +119,26 @@ RunStats runCapturedPair(const BodyDef& first, const BodyDef& second, int uncoun
 
 // A row of `count` dominoes (2 x 20 x 10 cm, 700 kg/m3) standing `spacing` apart along x on a floor of the default
 // material, the dominoes of friction mu and restitution e; the first is turned towards the second at 8 rad/s.
+// Steps `frames` frames and prints the highest total energy any frame reached against the start's.
+struct EnergyRun {
+    Real start = 0.0, highest = 0.0;
+    RunStats stats;
+};
+EnergyRun runForHighestEnergy(World& w, int frames) {
+    EnergyRun r;
+    r.start = r.highest = totalEnergy(w);
+    int highestFrame = 0;
+    r.stats = run(w, frames, [&](int f) {
+        if (const Real energy = totalEnergy(w); !(energy <= r.highest)) {
+            r.highest = energy;
+            highestFrame = f;
+        }
+    });
+    qInfo("energy at most %+.4f %% of its start (%.4g J), at frame %d", 100.0 * (r.highest - r.start) / r.start,
+          r.start, highestFrame);
+    return r;
+}
+
 Scene dominoRow(int count, Real spacing, Real mu, Real e) {
     Scene s;
     s.bodies.push_back(scenes::floorBox());
@@ -492,6 +512,28 @@ private slots:
         QVERIFY(highest <= start * 1.01);
     }
 
+    // Piles of 120 sticks dropped on a floor (tests/data/stability/README.md: sticks_pile_*.rlscene, written by a
+    // script as the piles of pileOfSticksGainsNoEnergy, 10:1 to 80:1, five materials, 0.1 to 75 kg). Crossed sticks
+    // lie in loops: a light one held under a heavy one (World::contactHold()) bore up a third stick that rested on
+    // the heavy one, or the heavy one rested on a third that rested on the light one, and the held stick, pushed by
+    // the third, lifted the heavy one as an immovable piston would, a little more at each sweep: before 2026-12-07
+    // these three piles gained 24 %, 7 % and 119 % of their energy within one step (from a census of 159 such piles:
+    // 3 on the code before, 0 now). The energy may not rise above its start (+1 %) in 2 s.
+    void pilesOfCrossedSticksGainNoEnergy_data() {
+        QTest::addColumn<QString>("file");
+        for (const char* file : {"sticks_pile_10.rlscene", "sticks_pile_17.rlscene", "sticks_pile_117.rlscene"})
+            QTest::newRow(file) << QString(file);
+    }
+    void pilesOfCrossedSticksGainNoEnergy() {
+        QFETCH(QString, file);
+        Result<Scene> scene = importScene(std::string(RL_SOURCE_DIR "/tests/data/stability/") + file.toStdString());
+        QVERIFY2(scene, scene ? "" : scene.error().toString().c_str());
+        World w = makeWorld(*scene);
+        const EnergyRun r = runForHighestEnergy(w, 120);
+        QVERIFY(r.stats.allFinite);
+        QVERIFY(r.highest <= r.start * 1.01);
+    }
+
     // Bodies landing on a floor while they spin fast, with e 0.95 and 1, with and without friction: a box, a 16-sided
     // cone and a plank, dropped still from 1 m or thrown down at 6 m/s from 2 m, spinning at 10 and 30 rad/s about an
     // axis and from a pose that differ from row to row. Each point of a landing bounces at e times its own approach
@@ -555,19 +597,9 @@ private slots:
             b.friction = mu;
         }
         World w = makeWorld(s);
-        const Real start = totalEnergy(w);
-        Real highest = start;
-        int highestFrame = 0;
-        const RunStats stats = run(w, 180, [&](int f) {
-            if (const Real energy = totalEnergy(w); !(energy <= highest)) {
-                highest = energy;
-                highestFrame = f;
-            }
-        });
-        qInfo("energy at most %+.4f %% of its start (%.4g J), at frame %d", 100.0 * (highest - start) / start, start,
-              highestFrame);
-        QVERIFY(stats.allFinite);
-        QVERIFY(highest <= start * 1.001);
+        const EnergyRun r = runForHighestEnergy(w, 180);
+        QVERIFY(r.stats.allFinite);
+        QVERIFY(r.highest <= r.start * 1.001);
     }
 
     // Piles of sticks dropped on a floor ("pick-up sticks"): 40 boxes and 8-sided cylinders of 15 cm to 1 m, 10:1 to

@@ -424,8 +424,9 @@ private:
     HoldGeometry holdGeometry(uint32_t slot) const;
     // Whether the lower body's surface moves into the upper one faster than WorldTuning::holdRiseSpeed at a point.
     bool risingInto(uint32_t slot, const HoldGeometry& g) const;
-    // Whether a third body (with a height) rests on `upper` and bears `lower` up: a loop of bodies each resting on
-    // the next, as crossed sticks in a pile make (see contactHold()).
+    // Whether a third body (with a height) rests on `upper` and bears `lower` up (a loop of bodies each resting on the
+    // next, as crossed sticks in a pile make), or `upper` rests on a third body that rests on `lower` (see
+    // contactHold()). "Rests on": the contact's normal has any downward part (m_contactBearsUp).
     bool holdsInALoop(uint32_t upper, uint32_t lower) const;
     // An inelastic impulse at the contact's fastest closing point, repeated while the lower body rises into the
     // upper one (heightsAboveSupport()).

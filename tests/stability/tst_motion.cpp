@@ -426,13 +426,9 @@ private slots:
             for (BodyDef& b : scene->bodies)
                 b.restitution = e;
         World w = makeWorld(*scene);
-        const auto energy = [&w] { return totalEnergy(w); };
-        const Real start = energy();
-        Real highest = start;
-        const RunStats stats = run(w, 120, [&](int) { highest = std::max(highest, energy()); });
-        qInfo("energy at most %+.4f %% of its start (%.1f J)", 100.0 * (highest - start) / start, start);
-        QVERIFY(stats.allFinite);
-        QVERIFY(highest <= start + within * std::abs(start));
+        const EnergyRun r = runForHighestEnergy(w, 120);
+        QVERIFY(r.stats.allFinite);
+        QVERIFY(r.highest <= r.start + within * std::abs(r.start));
     }
 
     // Rods dropped on a floor, turning: 0.5 m long boxes and 16-sided cylinders of 5:1, 20:1 and 100:1, from 0.5 and
@@ -496,20 +492,9 @@ private slots:
         s.bodies.back().material = material.toStdString();
         s.bodies.back().angularVelocity = spin * spinAxis;
         World w = makeWorld(s);
-        const Real start = totalEnergy(w);
-        Real highest = start;
-        int highestFrame = 0;
-        const RunStats stats = run(w, 240, [&](int f) {
-            if (const Real e = totalEnergy(w); !(e <= highest)) {
-                highest = e;
-                highestFrame = f;
-            }
-        });
-        if (highest > start)
-            qInfo("energy at most %+.3f %% of its start (%.4g J), at frame %d", 100.0 * (highest - start) / start,
-                  start, highestFrame);
-        QVERIFY(stats.allFinite);
-        QVERIFY(highest <= start * 1.01);
+        const EnergyRun r = runForHighestEnergy(w, 240);
+        QVERIFY(r.stats.allFinite);
+        QVERIFY(r.highest <= r.start * 1.01);
     }
 
     // Piles of 120 sticks dropped on a floor (tests/data/stability/README.md: sticks_pile_*.rlscene, written by a

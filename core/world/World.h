@@ -539,6 +539,10 @@ private:
     // touching contacts to test (positions in m_touchingContacts) and movedInto() of each.
     std::vector<Real> m_turnStep;
     std::vector<uint8_t> m_separated;
+    std::vector<uint32_t>
+        m_missedPairs;               // separateMovedPairs(): slots of pairs apart at the step's start that may have met
+    std::vector<Real> m_turnInStep;  // separateMovedPairs(): each moving body's turn in the step times its radius
+    std::vector<uint8_t> m_deviated; // and whether it strayed from its start velocity's path (separateMovedPairs())
     std::vector<uint32_t> m_turnedContacts;
     std::vector<uint8_t> m_movedInto;
     std::vector<uint32_t> m_secondPushed; // separateMovedPairs(): the bodies its second pass pushed
@@ -591,6 +595,9 @@ private:
     // Per pool slot: the contact's manifold's point count (not 0 while it touches). Kept beside the pool so that the
     // narrowphase can tell without reading the contact, which is some 610 bytes in no useful order.
     std::vector<uint8_t> m_contactTouching;
+    // Per contact slot: at least how far apart the pair's bodies were at the step's start where it had no point (its
+    // boxes' gap, or the margin it was collided with), for separateMovedPairs().
+    std::vector<Real> m_pairStartGap;
     // Per slot: 1 while the contact is in a member's list of solved contacts (NarrowList::solved), which the chunks
     // of the narrowphase then pass over.
     std::vector<uint8_t> m_contactListed;
@@ -680,6 +687,7 @@ private:
     ContactSolverCounters m_solverCounters;
     // With CCD on: each dynamic body's centre and orientation at the start of the step (refreshTransforms()).
     std::vector<Vec3> m_stepStartPosition;
+    std::vector<Vec3> m_stepStartVelocity; // with the position: each body's linear velocity at the step's start
     std::vector<Quat> m_stepStartOrientation;
 
     Profile m_profile;

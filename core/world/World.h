@@ -142,6 +142,9 @@ struct WorldTuning {
     int blowShockPasses = 2;
     // CCD sweeps a body that moves more than this fraction of its smallest size in one step.
     Real ccdFraction = 0.5;
+    // The radius of a swept body's core, a ball about its centre of mass, as a fraction of its thinnest size: swept
+    // where the body began the step close to another and closed in on it fast (World::continuousCollision()).
+    Real ccdCoreFraction = 0.125;
     // A box whose corners move more than this (m) in a step by its turn gets the corners the turn brings towards its
     // neighbours as contact points (addTurnedSupports(); other hulls from 1 mm on). Over 600 frames of a bouncing pile
     // of 1,000 boxes (e = 0.5), 72 frames held a contact deeper than 1 cm against 83 without, the deepest 51.2 mm

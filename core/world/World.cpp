@@ -752,16 +752,17 @@ void World::separateMovedPairs(Real slop) {
     // their travels and turns: the margin counts the speeds at the start, and a body stopped within the step by
     // another contact is caught up by the one behind it. In ramps.obj a cube sliding down at 4.4 m/s went 27.5 mm
     // into the one ahead of it, which the floor at the ramp's foot stopped from 4.4 m/s to 1.3 within the step
-    // (2026-12-08; over 104 starts the first 2 s held contacts 4.2-14.2 mm deep at worst with this pass, 4.5-26.0 mm
-    // before that day's changes). Those pairs are collided again where the step left them and pushed apart as the
-    // others below. (Only with CCD on, which keeps where each body began the step.)
+    // (2026-12-08; over 104 starts the deepest contact of the first 2 s was 4.5-26.0 mm before, 4.5-14.7 mm with
+    // this pass, 4.2-14.2 mm with the CCD change of the same day too). Those pairs are collided again where the step
+    // left them and pushed apart as the others below. (Only with CCD on, which keeps where each body began the step.)
     m_missedPairs.clear();
     if (m_stepStartPosition.size() == bodies) {
         // Two bodies came nearer by at most their travels' difference plus their turns times their radii. That is
         // at most what the margin covers (their speeds' difference and their spins at the start, times the step)
         // plus each one's deviation: its travel less its start velocity times the step, plus what its turn exceeds
         // its start spin by. So only pairs with a body that deviated by more than half the speculative distance are
-        // looked at. (A turn's angle 2 asin s, with s and c the sine and cosine of its half, is at most 2 s / c: no
+        // looked at. (Where the margin was capped at the bodies' size, one of them moved more than half its own and
+        // CCD swept it. A turn's angle 2 asin s, with s and c the sine and cosine of its half, is at most 2 s / c: no
         // arc sine.)
         m_turnInStep.assign(bodies, 0.0);
         m_deviated.assign(bodies, 0);

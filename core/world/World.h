@@ -542,10 +542,11 @@ private:
     // touching contacts to test (positions in m_touchingContacts) and movedInto() of each.
     std::vector<Real> m_turnStep;
     std::vector<uint8_t> m_separated;
-    std::vector<uint32_t>
-        m_missedPairs;               // separateMovedPairs(): slots of pairs apart at the step's start that may have met
-    std::vector<Real> m_turnInStep;  // separateMovedPairs(): each moving body's turn in the step times its radius
-    std::vector<uint8_t> m_deviated; // and whether it strayed from its start velocity's path (separateMovedPairs())
+    // separateMovedPairs(): the slots of the pairs apart at the step's start that may have met within it; each
+    // moving body's turn in the step times its radius, and whether it strayed from its start velocity's path.
+    std::vector<uint32_t> m_missedPairs;
+    std::vector<Real> m_turnInStep;
+    std::vector<uint8_t> m_deviated;
     std::vector<uint32_t> m_turnedContacts;
     std::vector<uint8_t> m_movedInto;
     std::vector<uint32_t> m_secondPushed; // separateMovedPairs(): the bodies its second pass pushed

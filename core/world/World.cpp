@@ -737,6 +737,14 @@ void World::separateMovedPairs(Real slop) {
     m_turnStep.assign(bodies, 0.0);
     m_struck.clear();
     bool any = false;
+    // With CCD on (which keeps where each body began the step), also each body's turn in the step and whether it
+    // strayed from its start velocity's path, for the pairs that had no points at the start (below).
+    const bool tracksStart = m_stepStartPosition.size() == bodies;
+    bool anyDeviated = false;
+    if (tracksStart) {
+        m_turnInStep.assign(bodies, 0.0);
+        m_deviated.assign(bodies, 0);
+    }
     for (uint32_t i = 0; i < bodies; ++i) {
         if (!m_state.isMoving(i))
             continue;
@@ -746,6 +754,16 @@ void World::separateMovedPairs(Real slop) {
         if ((glm::length(m_state.linearVelocity[i]) + spin - m_reach[i] - m_pushSpeed[i]) * dt >
             m_tuning.speculativeDistance)
             m_struck.push_back(i);
+        if (tracksStart) {
+            const Real c = std::abs(glm::dot(m_stepStartOrientation[i], m_state.orientation[i]));
+            const Real s = std::sqrt(std::max(1.0 - c * c, 0.0));
+            m_turnInStep[i] = (2.0 * s < glm::pi<Real>() * c ? 2.0 * s / c : glm::pi<Real>()) * m_radius[i];
+            const Real startSpin = m_reach[i] - glm::length(m_stepStartVelocity[i]);
+            const Vec3 off = m_state.position[i] - m_stepStartPosition[i] - m_stepStartVelocity[i] * dt;
+            m_deviated[i] =
+                glm::length(off) + std::max(m_turnInStep[i] - startSpin * dt, 0.0) > 0.5 * m_tuning.speculativeDistance;
+            anyDeviated = anyDeviated || m_deviated[i];
+        }
     }
     // Also each pair of moving bodies that had no points at the step's start, so was more than its margin apart
     // (at least the speculative distance), and whose bodies came nearer to each other in the step than that by
@@ -756,7 +774,7 @@ void World::separateMovedPairs(Real slop) {
     // this pass, 4.2-14.2 mm with the CCD change of the same day too). Those pairs are collided again where the step
     // left them and pushed apart as the others below. (Only with CCD on, which keeps where each body began the step.)
     m_missedPairs.clear();
-    if (m_stepStartPosition.size() == bodies) {
+    if (tracksStart) {
         // Two bodies came nearer by at most their travels' difference plus their turns times their radii. That is
         // at most what the margin covers (their speeds' difference and their spins at the start, times the step)
         // plus each one's deviation: its travel less its start velocity times the step, plus what its turn exceeds
@@ -764,20 +782,6 @@ void World::separateMovedPairs(Real slop) {
         // looked at. (Where the margin was capped at the bodies' size, one of them moved more than half its own and
         // CCD swept it. A turn's angle 2 asin s, with s and c the sine and cosine of its half, is at most 2 s / c: no
         // arc sine.)
-        m_turnInStep.assign(bodies, 0.0);
-        m_deviated.assign(bodies, 0);
-        bool anyDeviated = false;
-        for (uint32_t i = 0; i < bodies; ++i)
-            if (m_state.isMoving(i)) {
-                const Real c = std::abs(glm::dot(m_stepStartOrientation[i], m_state.orientation[i]));
-                const Real s = std::sqrt(std::max(1.0 - c * c, 0.0));
-                m_turnInStep[i] = (2.0 * s < glm::pi<Real>() * c ? 2.0 * s / c : glm::pi<Real>()) * m_radius[i];
-                const Real startSpin = m_reach[i] - glm::length(m_stepStartVelocity[i]);
-                const Vec3 off = m_state.position[i] - m_stepStartPosition[i] - m_stepStartVelocity[i] * dt;
-                m_deviated[i] = glm::length(off) + std::max(m_turnInStep[i] - startSpin * dt, 0.0) >
-                                0.5 * m_tuning.speculativeDistance;
-                anyDeviated = anyDeviated || m_deviated[i];
-            }
         for (size_t i = 0; anyDeviated && i < m_pairContacts.size(); ++i) {
             const auto [a, b] = m_pairBodies[i];
             if (!m_deviated[a] && !m_deviated[b])
@@ -2980,12 +2984,14 @@ void World::continuousCollision() {
         return Motion{m_state.position[k] - m_stepStartPosition[k], angle * m_radius[k]};
     };
     const auto isFast = [&](uint32_t k, Real sweep) { return sweep > fraction * m_minExtent[k]; };
-    // Body k's pose at the fraction t of the step.
+    // Body k's centre of mass at the fraction t of the step, on its straight path, and its pose there.
+    const auto centreAt = [&](uint32_t k, Real t) {
+        return m_stepStartPosition[k] + (m_state.position[k] - m_stepStartPosition[k]) * t;
+    };
     const auto poseOf = [&](uint32_t k, Real t) {
         const Quat shapeQ =
             glm::slerp(m_stepStartOrientation[k], m_state.orientation[k], t) * m_state.info[k].shapeFromPrincipal;
-        const Vec3 com = m_stepStartPosition[k] + (m_state.position[k] - m_stepStartPosition[k]) * t;
-        return Transform::fromQuat(com - shapeQ * m_state.info[k].comInShape, shapeQ);
+        return Transform::fromQuat(centreAt(k, t) - shapeQ * m_state.info[k].comInShape, shapeQ);
     };
     // The first t below `limit` at which a at poseA(t) comes within `target` of b at poseB(t), by conservative
     // advancement (Mirtich 1996): from a distance d along the normal n between them, no point of a closes in on b
@@ -3030,10 +3036,7 @@ void World::continuousCollision() {
         core.radius = m_tuning.ccdCoreFraction * m_minExtent[k];
         return core;
     };
-    const auto corePoseOf = [&](uint32_t k, Real t) {
-        return Transform::fromQuat(m_stepStartPosition[k] + (m_state.position[k] - m_stepStartPosition[k]) * t,
-                                   Quat(1.0, 0.0, 0.0, 0.0));
-    };
+    const auto corePoseOf = [&](uint32_t k, Real t) { return Transform::fromQuat(centreAt(k, t), identityQuat()); };
     // The first t below `limit` at which a (on poseA) and b (on poseB) meet; where they began the step close, the
     // speculative contact and the solver own the pair, but their points are those the narrowphase found at the step
     // start, and a body that turns, or that the blow turns, can bring others through within the step. So the cores

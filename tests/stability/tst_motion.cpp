@@ -139,6 +139,11 @@ EnergyRun runForHighestEnergy(World& w, int frames) {
     return r;
 }
 
+// A state captured for these tests (tests/data/stability/README.md), by its file name there.
+Result<Scene> capturedScene(const std::string& file) {
+    return importScene(std::string(RL_SOURCE_DIR "/tests/data/stability/") + file);
+}
+
 Scene dominoRow(int count, Real spacing, Real mu, Real e) {
     Scene s;
     s.bodies.push_back(scenes::floorBox());
@@ -420,7 +425,7 @@ private slots:
         QFETCH(QString, file);
         QFETCH(double, e);
         QFETCH(double, within);
-        Result<Scene> scene = importScene(std::string(RL_SOURCE_DIR "/tests/data/stability/") + file.toStdString());
+        Result<Scene> scene = capturedScene(file.toStdString());
         QVERIFY2(scene, scene ? "" : scene.error().toString().c_str());
         if (e >= 0.0)
             for (BodyDef& b : scene->bodies)
@@ -511,7 +516,7 @@ private slots:
     }
     void pilesOfCrossedSticksGainNoEnergy() {
         QFETCH(QString, file);
-        Result<Scene> scene = importScene(std::string(RL_SOURCE_DIR "/tests/data/stability/") + file.toStdString());
+        Result<Scene> scene = capturedScene(file.toStdString());
         QVERIFY2(scene, scene ? "" : scene.error().toString().c_str());
         World w = makeWorld(*scene);
         const EnergyRun r = runForHighestEnergy(w, 120);
@@ -538,7 +543,7 @@ private slots:
     }
     void bulletsStayOnTheirSideOfThinWalls() {
         QFETCH(QString, file);
-        Result<Scene> scene = importScene(std::string(RL_SOURCE_DIR "/tests/data/stability/") + file.toStdString());
+        Result<Scene> scene = capturedScene(file.toStdString());
         QVERIFY2(scene, scene ? "" : scene.error().toString().c_str());
         size_t wall = 0, bullet = 0;
         for (size_t i = 0; i < scene->bodies.size(); ++i) {
@@ -691,8 +696,7 @@ private slots:
     // one that tumbles on a ball. The light one's surface slides across the contact at 4-6 m/s; not held under the
     // heavy one for that (tried, 2026-12-05), it was crushed 187 mm into it.
     void capturedHeavyLandingCrushesNothing() {
-        Result<Scene> scene =
-            importScene(std::string(RL_SOURCE_DIR "/tests/data/stability/heavy_onto_tumbling_light_body.rlscene"));
+        Result<Scene> scene = capturedScene("heavy_onto_tumbling_light_body.rlscene");
         QVERIFY2(scene, scene ? "" : scene.error().toString().c_str());
         World w = makeWorld(*scene);
         const RunStats stats = run(w, 120);
@@ -1438,8 +1442,7 @@ private slots:
     // neighbours. It rocked at up to 0.8 rad/s without end while the contact reduction dropped a touching corner
     // for speculative ones (measured over 600 frames); now it is asleep within two seconds.
     void cubeOnThreeCornersComesToRest() {
-        Result<Scene> scene =
-            importScene(std::string(RL_SOURCE_DIR "/tests/data/stability/cube_on_three_corners.rlscene"));
+        Result<Scene> scene = capturedScene("cube_on_three_corners.rlscene");
         QVERIFY2(scene, scene ? "" : scene.error().toString().c_str());
         World w = makeWorld(*scene);
         Real fastestSpin = 0.0;
